@@ -1,0 +1,32 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Counters and timings of one run of CGAL::point_minkowski_sum(), filled when the named
+// parameter `statistics(s)` is given.
+
+#ifndef CGAL_PMSUM_STATISTICS_H
+#define CGAL_PMSUM_STATISTICS_H
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Pmsum {
+
+struct Statistics
+{
+  std::size_t samples_p = 0, samples_q = 0; ///< sizes of the d-coverings of P and Q
+  std::size_t feature_pairs = 0;            ///< feature pairs kept by the normal filter
+  std::size_t candidates = 0;               ///< sample pairs p + q kept by the normal filter
+  std::size_t cd_queries = 0;               ///< collision tests (one per candidate and direction tried)
+  std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests inside them
+  std::size_t containment_tests = 0;        ///< exact point-in-solid tests inside them
+  std::size_t output_points = 0;
+  double seconds_setup = 0;                 ///< input checks, sampling resolutions, AABB trees
+  double seconds_normal_filter = 0;
+  double seconds_cd_filter = 0;             ///< candidate enumeration and CD filter
+};
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_STATISTICS_H

@@ -1,0 +1,46 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Errors reported by CGAL_pmsum. The library never prints: it throws one of these, with a
+// message that says what is wrong and where.
+
+#ifndef CGAL_PMSUM_EXCEPTIONS_H
+#define CGAL_PMSUM_EXCEPTIONS_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Pmsum {
+
+/// Input the algorithm cannot handle: empty mesh, non-triangle or degenerate face,
+/// coordinate that is not finite or not a double, inward orientation, d <= 0, ...
+class Invalid_input : public std::invalid_argument
+{
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The candidate count exceeds the limit set with `maximum_number_of_candidates()`.
+class Too_many_candidates : public std::runtime_error
+{
+public:
+  Too_many_candidates(std::size_t candidates, std::size_t limit)
+    : std::runtime_error("the normal filter leaves " + std::to_string(candidates) +
+                         " candidate points, more than the limit of " + std::to_string(limit)),
+      candidates(candidates), limit(limit) {}
+  std::size_t candidates, limit;
+};
+
+/// The progress callback returned false.
+class Operation_cancelled : public std::runtime_error
+{
+public:
+  Operation_cancelled() : std::runtime_error("point_minkowski_sum was cancelled by its callback") {}
+};
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_EXCEPTIONS_H

@@ -1,0 +1,460 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 3 of the pipeline: the collision-detection filter (paper sections 4 and 8), exact.
+//
+// A candidate x = p + q is a boundary point of P + Q iff the translate t = x + (infinitesimal
+// outward perturbation) is outside P + Q, i.e. iff (-P + t) and Q are disjoint. We decide
+// that for t = x + e n_1 + e^2 n_2 + ... + e^(k) n_k with e > 0 infinitesimal, where n_1 is
+// the candidate's outward direction, n_2.. its other directions, and the chain ends with the
+// three axes. Every predicate is an orientation determinant affine in t (design note
+// shared/design/exact-contact.md), so its sign is the sign of the first non-zero term of
+// (D(x), g.n_1, g.n_2, ...), computed exactly (interval filter, then CGAL::Mpzf). Since the
+// chain spans R^3, no evaluated predicate is zero: the configuration is generic and
+//   disjoint  <=>  no edge of one mesh crosses a triangle of the other, and no connected
+//                  component of one mesh lies inside a closed component of the other.
+// The first condition is tested triangle pair by triangle pair, with a CGAL AABB tree of
+// the mesh with more triangles ("static", not translated) and the triangles of the other
+// ("moving", reflected and translated by t) as box queries. The second is a ray-parity
+// point-in-solid test from one vertex of each component, also with an AABB tree.
+// Meshes with borders bound no volume: only their surface counts.
+//
+// Scaling: x has denominator S = den_p den_q. Exact evaluations multiply every position by S
+// (signs of homogeneous determinants do not change), so that all values are sums of
+// products of doubles and integers, which CGAL::Mpzf represents exactly.
+
+#ifndef CGAL_PMSUM_INTERNAL_CD_FILTER_H
+#define CGAL_PMSUM_INTERNAL_CD_FILTER_H
+
+#include <CGAL_pmsum/internal/normal_filter.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+/// AABB tree primitive: one triangle of a mesh, by index.
+struct Triangle_primitive
+{
+  using Id = Index;
+  using Point = Epick::Point_3;
+  using Datum = Epick::Triangle_3;
+  using Input = std::vector<std::pair<Index, Datum>>::const_iterator;
+
+  Triangle_primitive(Input it) : m_id(it->first), m_triangle(it->second) {}
+  Id id() const { return m_id; }
+  const Datum& datum() const { return m_triangle; }
+  Point reference_point() const { return m_triangle[0]; }
+
+private:
+  Id m_id;
+  Datum m_triangle;
+};
+
+using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Triangle_primitive>>;
+
+/// A mesh with its AABB tree, in a given frame (its coordinates, or their negation).
+struct Tree_mesh
+{
+  const Mesh_data* mesh;
+  std::vector<std::array<double, 3>> base; // coordinates in this frame
+  std::vector<std::pair<Index, Epick::Triangle_3>> triangles;
+  Triangle_tree tree;
+  CGAL::Bbox_3 closed_box;                 // bounding box of the closed components
+  bool has_closed = false;
+  std::array<double, 3> ray{};             // a direction parallel to no edge
+
+  Tree_mesh(const Mesh_data& m, bool reflect) : mesh(&m)
+  {
+    for (const auto& p : m.points)
+      base.push_back(reflect ? std::array<double, 3>{-p[0], -p[1], -p[2]} : p);
+    auto pt = [&](Index v) { return Epick::Point_3(base[v][0], base[v][1], base[v][2]); };
+    for (Index t = 0; t < m.number_of_triangles(); ++t) {
+      const auto& tri = m.triangles[t];
+      triangles.emplace_back(t, Epick::Triangle_3(pt(tri[0]), pt(tri[1]), pt(tri[2])));
+      if (m.triangle_is_closed(t)) {
+        closed_box += triangles.back().second.bbox();
+        has_closed = true;
+      }
+    }
+    tree.insert(triangles.cbegin(), triangles.cend());
+    tree.build();
+    choose_ray();
+  }
+
+private:
+  void choose_ray()
+  {
+    const std::array<std::array<double, 3>, 6> candidates = {{{1.0, 0.7548776662466927, 0.5698402909980532},
+                                                              {0.3183098861837907, 1.0, 0.7071067811865476},
+                                                              {0.5772156649015329, 0.2718281828459045, 1.0},
+                                                              {-1.0, 0.6180339887498949, 0.4142135623730950},
+                                                              {0.8414709848078965, -1.0, 0.1411200080598672},
+                                                              {0.2360679774997897, 0.4472135954999579, -1.0}}};
+    for (const auto& w : candidates) {
+      bool ok = true;
+      for (const auto& e : mesh->edges) {
+        const std::array<double, 3> u = base[e.v[1]] - base[e.v[0]];
+        bool parallel = true;
+        for (int c = 0; c < 3 && parallel; ++c)
+          parallel = filtered_sign([&](auto nt) {
+                       using NT = decltype(nt);
+                       return cross(to_nt<NT>(w), to_nt<NT>(u))[c];
+                     }) == CGAL::ZERO;
+        if (parallel) { ok = false; break; }
+      }
+      if (ok) { ray = w; return; }
+    }
+    throw std::logic_error("CGAL_pmsum: no ray direction avoids the edge directions of a mesh");
+  }
+};
+
+/// Counters of the CD filter, for the summary.
+struct Cd_statistics
+{
+  std::size_t queries = 0;            // is_free calls
+  std::size_t triangle_pairs = 0;     // exact triangle-triangle tests
+  std::size_t containment_tests = 0;  // ray-parity point-in-solid tests
+};
+
+class Cd_filter
+{
+public:
+  /// P and Q are the meshes of the sum (P already negated for a contact space).
+  Cd_filter(const Mesh_data& P, const Mesh_data& Q)
+    : m_p(&P), m_q(&Q),
+      m_static_is_p(P.number_of_triangles() >= Q.number_of_triangles()),
+      m_static(m_static_is_p ? P : Q, false),
+      m_moving(m_static_is_p ? Q : P, true)
+  {
+    // Margin for the conservative double slab tests of ray traversal.
+    double scale = 1;
+    for (const Tree_mesh* tm : {&m_static, &m_moving})
+      for (const auto& p : tm->base) scale = (std::max)({scale, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+    m_margin = 1e-6 * 4 * scale;
+  }
+
+  const Cd_statistics& statistics() const { return m_stats; }
+
+  /// Is x = p + q, perturbed along directions[first] (then the other directions of the
+  /// candidate, then the axes), outside P + Q?
+  bool is_free(const Sample& p, const Sample& q, const Direction* directions, std::uint32_t count,
+               std::uint32_t first)
+  {
+    ++m_stats.queries;
+    set_query(p, q, directions, count, first);
+
+    // 1. Does a triangle of the moving mesh cross a triangle of the static mesh?
+    const Mesh_data& M = *m_moving.mesh;
+    for (Index t = 0; t < M.number_of_triangles(); ++t) {
+      CGAL::Bbox_3 box = translated_box(m_moving.triangles[t].second.bbox());
+      if (!CGAL::do_overlap(box, m_static.tree.bbox())) continue;
+      bool hit = false;
+      Box_traversal traversal{box, [&](Index s) {
+                                ++m_stats.triangle_pairs;
+                                return hit = triangles_cross(t, s);
+                              }};
+      m_static.tree.traversal(box, traversal);
+      if (hit) return false;
+    }
+    // 2. Is a component of one mesh inside a closed component of the other?
+    for (const auto& c : M.components) {
+      const auto& r = m_moving.base[c.representative_vertex];
+      if (inside(m_static, r, +1)) return false;
+    }
+    for (const auto& c : m_static.mesh->components) {
+      const auto& l = m_static.base[c.representative_vertex];
+      if (inside(m_moving, l, -1)) return false;
+    }
+    return true;
+  }
+
+private:
+  // ----- query state -------------------------------------------------------------------
+  void set_query(const Sample& p, const Sample& q, const Direction* directions, std::uint32_t count,
+                 std::uint32_t first)
+  {
+    m_sp = &p; m_sq = &q;
+    m_dirs = directions; m_dir_count = count; m_dir_first = first;
+    m_exact_x.reset();
+    CGAL::Protect_FPU_rounding<true> guard;
+    m_x = sample_interval(*m_p, p) + sample_interval(*m_q, q);
+  }
+
+  static Vec3<Interval> sample_interval(const Mesh_data& M, const Sample& s)
+  {
+    Vec3<Interval> r = {Interval(0), Interval(0), Interval(0)};
+    for (int i = 0; i < 3; ++i) {
+      if (s.weights[i] == 0) continue;
+      r = r + scaled(M.point<Interval>(s.vertices[i]), Interval(s.weights[i]) / Interval(s.denominator));
+    }
+    return r;
+  }
+
+  /// S * x exactly, and S.
+  const std::pair<Vec3<Exact_nt>, Exact_nt>& exact_x()
+  {
+    if (!m_exact_x) {
+      auto part = [](const Mesh_data& M, const Sample& s, std::int64_t other_den) {
+        Vec3<Exact_nt> r = {Exact_nt(0), Exact_nt(0), Exact_nt(0)};
+        for (int i = 0; i < 3; ++i)
+          if (s.weights[i] != 0)
+            r = r + scaled(M.point<Exact_nt>(s.vertices[i]), Exact_nt(long(s.weights[i] * other_den)));
+        return r;
+      };
+      m_exact_x.emplace(part(*m_p, *m_sp, m_sq->denominator) + part(*m_q, *m_sq, m_sp->denominator),
+                        Exact_nt(long(std::int64_t(m_sp->denominator) * m_sq->denominator)));
+    }
+    return *m_exact_x;
+  }
+
+  CGAL::Bbox_3 translated_box(const CGAL::Bbox_3& b) const
+  {
+    return CGAL::Bbox_3(b.xmin() + m_x[0].inf(), b.ymin() + m_x[1].inf(), b.zmin() + m_x[2].inf(),
+                        b.xmax() + m_x[0].sup(), b.ymax() + m_x[1].sup(), b.zmax() + m_x[2].sup())
+           + CGAL::Bbox_3(std::nextafter(b.xmin() + m_x[0].inf(), -HUGE_VAL),
+                          std::nextafter(b.ymin() + m_x[1].inf(), -HUGE_VAL),
+                          std::nextafter(b.zmin() + m_x[2].inf(), -HUGE_VAL),
+                          std::nextafter(b.xmax() + m_x[0].sup(), HUGE_VAL),
+                          std::nextafter(b.ymax() + m_x[1].sup(), HUGE_VAL),
+                          std::nextafter(b.zmax() + m_x[2].sup(), HUGE_VAL));
+  }
+
+  // ----- perturbed orientation ---------------------------------------------------------
+  /// A point base + shift * t, base in double coordinates.
+  struct Moving_point
+  {
+    const std::array<double, 3>* base;
+    int shift; // -1, 0 or +1
+  };
+
+  template <class NT>
+  Vec3<NT> position(const Moving_point& m)
+  {
+    if constexpr (std::is_same<NT, Interval>::value) {
+      const Vec3<NT> b = to_nt<NT>(*m.base);
+      return m.shift == 0 ? b : m.shift > 0 ? b + m_x : b - m_x;
+    } else {
+      const auto& [X, S] = exact_x();
+      const Vec3<NT> b = scaled(to_nt<NT>(*m.base), S);
+      return m.shift == 0 ? b : m.shift > 0 ? b + X : b - X;
+    }
+  }
+
+  /// Sign of the perturbation terms g.n_1, g.n_2, ..., g.e_x, g.e_y, g.e_z where g is given
+  /// by a generic callable g(nt).
+  template <class G>
+  CGAL::Sign perturbation_sign(const G& g)
+  {
+    for (std::uint32_t k = 0; k < m_dir_count; ++k) {
+      const Direction& d = m_dirs[(m_dir_first + k) % m_dir_count];
+      const CGAL::Sign s = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        return dot(g(nt), d.vector<NT>(*m_p, *m_q));
+      });
+      if (s != CGAL::ZERO) return s;
+    }
+    for (int c = 0; c < 3; ++c) {
+      const CGAL::Sign s = filtered_sign([&](auto nt) { return g(nt)[c]; });
+      if (s != CGAL::ZERO) return s;
+    }
+    throw std::logic_error("CGAL_pmsum: a perturbed predicate is identically zero");
+  }
+
+  /// Sign of orient3d(a, b, c, d) = det[b - a, c - a, d - a] at the perturbed t.
+  CGAL::Sign orientation(const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                         const Moving_point& d)
+  {
+    const CGAL::Sign s0 = filtered_sign([&](auto nt) {
+      using NT = decltype(nt);
+      const Vec3<NT> pa = position<NT>(a);
+      return dot(position<NT>(d) - pa, cross(position<NT>(b) - pa, position<NT>(c) - pa));
+    });
+    if (s0 != CGAL::ZERO) return s0;
+    // D(t) = D(0) + g.t with g = (db-da) u2 x u3 + (dc-da) u3 x u1 + (dd-da) u1 x u2.
+    return perturbation_sign([&](auto nt) {
+      using NT = decltype(nt);
+      const Vec3<NT> pa = to_nt<NT>(*a.base);
+      const Vec3<NT> u1 = to_nt<NT>(*b.base) - pa, u2 = to_nt<NT>(*c.base) - pa, u3 = to_nt<NT>(*d.base) - pa;
+      Vec3<NT> g = {NT(0), NT(0), NT(0)};
+      if (b.shift != a.shift) g = g + scaled(cross(u2, u3), NT(b.shift - a.shift));
+      if (c.shift != a.shift) g = g + scaled(cross(u3, u1), NT(c.shift - a.shift));
+      if (d.shift != a.shift) g = g + scaled(cross(u1, u2), NT(d.shift - a.shift));
+      return g;
+    });
+  }
+
+  // ----- surface crossing --------------------------------------------------------------
+  /// Does triangle t of the moving mesh (translated) cross triangle s of the static mesh?
+  bool triangles_cross(Index t, Index s)
+  {
+    const auto& tm = m_moving.mesh->triangles[t];
+    const auto& ts = m_static.mesh->triangles[s];
+    std::array<Moving_point, 3> A, B;
+    for (int i = 0; i < 3; ++i) {
+      A[i] = {&m_moving.base[tm[i]], 1};
+      B[i] = {&m_static.base[ts[i]], 0};
+    }
+    std::array<CGAL::Sign, 3> sa, sb; // sides of A's points w.r.t. B's plane, and reverse
+    for (int i = 0; i < 3; ++i) sa[i] = orientation(B[0], B[1], B[2], A[i]);
+    if (sa[0] == sa[1] && sa[1] == sa[2]) return false;
+    for (int i = 0; i < 3; ++i) sb[i] = orientation(A[0], A[1], A[2], B[i]);
+    if (sb[0] == sb[1] && sb[1] == sb[2]) return false;
+    return edge_crosses(A, sa, B) || edge_crosses(B, sb, A);
+  }
+
+  /// Does an edge of triangle E, whose vertices lie on sides `side` of the plane of T,
+  /// cross the interior of T?
+  bool edge_crosses(const std::array<Moving_point, 3>& E, const std::array<CGAL::Sign, 3>& side,
+                    const std::array<Moving_point, 3>& T)
+  {
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      if (side[i] == side[j]) continue;
+      const CGAL::Sign o1 = orientation(E[i], E[j], T[0], T[1]);
+      const CGAL::Sign o2 = orientation(E[i], E[j], T[1], T[2]);
+      if (o1 != o2) continue;
+      if (orientation(E[i], E[j], T[2], T[0]) == o1) return true;
+    }
+    return false;
+  }
+
+  // ----- containment -------------------------------------------------------------------
+  /// Is the point z = base + shift * t inside the closed components of `solid` (in the
+  /// solid's frame)? Ray parity along solid.ray.
+  bool inside(const Tree_mesh& solid, const std::array<double, 3>& base, int shift)
+  {
+    if (!solid.has_closed) return false;
+    // Conservative box of z.
+    std::array<double, 3> lo, hi;
+    for (int c = 0; c < 3; ++c) {
+      const Interval z = Interval(base[c]) + (shift > 0 ? m_x[c] : shift < 0 ? -m_x[c] : Interval(0));
+      lo[c] = z.inf(); hi[c] = z.sup();
+    }
+    const CGAL::Bbox_3& cb = solid.closed_box;
+    for (int c = 0; c < 3; ++c)
+      if (hi[c] < cb.min(c) || lo[c] > cb.max(c)) return false;
+    ++m_stats.containment_tests;
+
+    const Moving_point z{&base, shift};
+    const std::array<double, 3>& w = solid.ray;
+    std::array<double, 3> origin;
+    for (int c = 0; c < 3; ++c) origin[c] = 0.5 * (lo[c] + hi[c]);
+    bool odd = false;
+    Ray_traversal traversal{origin, w, m_margin, [&](Index s) {
+                              if (solid.mesh->triangle_is_closed(s) && ray_crosses(solid, s, z)) odd = !odd;
+                              return false;
+                            }};
+    solid.tree.traversal(0, traversal);
+    return odd;
+  }
+
+  /// Does the ray z + s w, s > 0, cross triangle s of `solid` (z perturbed, generic)?
+  bool ray_crosses(const Tree_mesh& solid, Index s, const Moving_point& z)
+  {
+    const auto& tri = solid.mesh->triangles[s];
+    const std::array<Moving_point, 3> T = {Moving_point{&solid.base[tri[0]], 0},
+                                           Moving_point{&solid.base[tri[1]], 0},
+                                           Moving_point{&solid.base[tri[2]], 0}};
+    const std::array<double, 3>& w = solid.ray;
+    const CGAL::Sign toward = filtered_sign([&](auto nt) {
+      using NT = decltype(nt);
+      const Vec3<NT> a = to_nt<NT>(*T[0].base);
+      return dot(to_nt<NT>(w), cross(to_nt<NT>(*T[1].base) - a, to_nt<NT>(*T[2].base) - a));
+    });
+    if (toward == CGAL::ZERO) return false; // ray parallel to the plane, z not on it
+    if (orientation(T[0], T[1], T[2], z) != -toward) return false; // z must be behind the plane
+    // The line z + s w must pass through the triangle: det[w, a - z, b - z] of equal signs.
+    CGAL::Sign first = CGAL::ZERO;
+    for (int i = 0; i < 3; ++i) {
+      const Moving_point& a = T[i];
+      const Moving_point& b = T[(i + 1) % 3];
+      CGAL::Sign si = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        const Vec3<NT> pz = position<NT>(z);
+        return dot(to_nt<NT>(w), cross(position<NT>(a) - pz, position<NT>(b) - pz));
+      });
+      if (si == CGAL::ZERO) // f(z) = w.(a x b) + z.(w x (b - a)): g = shift * w x (b - a)
+        si = perturbation_sign([&](auto nt) {
+          using NT = decltype(nt);
+          return scaled(cross(to_nt<NT>(w), to_nt<NT>(*b.base) - to_nt<NT>(*a.base)), NT(z.shift));
+        });
+      if (i == 0) first = si;
+      else if (si != first) return false;
+    }
+    return true;
+  }
+
+  // ----- AABB traversals ---------------------------------------------------------------
+  template <class F>
+  struct Box_traversal
+  {
+    CGAL::Bbox_3 box;
+    F on_primitive; // returns true to stop
+    bool stop = false;
+    bool go_further() const { return !stop; }
+    template <class Query, class Primitive>
+    void intersection(const Query&, const Primitive& p)
+    { if (CGAL::do_overlap(box, p.datum().bbox())) stop = on_primitive(p.id()); }
+    template <class Query, class Node>
+    bool do_intersect(const Query&, const Node& node) const { return CGAL::do_overlap(box, node.bbox()); }
+  };
+  template <class F> Box_traversal(CGAL::Bbox_3, F) -> Box_traversal<F>;
+
+  template <class F>
+  struct Ray_traversal
+  {
+    std::array<double, 3> origin, dir;
+    double margin;
+    F on_primitive;
+    bool go_further() const { return true; }
+    bool hits(const CGAL::Bbox_3& b) const
+    {
+      double tmin = 0, tmax = HUGE_VAL;
+      for (int c = 0; c < 3; ++c) {
+        const double lo = b.min(c) - margin, hi = b.max(c) + margin;
+        if (dir[c] == 0) { if (origin[c] < lo || origin[c] > hi) return false; continue; }
+        double t1 = (lo - origin[c]) / dir[c], t2 = (hi - origin[c]) / dir[c];
+        if (t1 > t2) std::swap(t1, t2);
+        tmin = (std::max)(tmin, t1); tmax = (std::min)(tmax, t2);
+      }
+      return tmin <= tmax;
+    }
+    template <class Query, class Primitive>
+    void intersection(const Query&, const Primitive& p) { if (hits(p.datum().bbox())) on_primitive(p.id()); }
+    template <class Query, class Node>
+    bool do_intersect(const Query&, const Node& node) const { return hits(node.bbox()); }
+  };
+  template <class F> Ray_traversal(std::array<double, 3>, std::array<double, 3>, double, F) -> Ray_traversal<F>;
+
+  const Mesh_data* m_p;
+  const Mesh_data* m_q;
+  bool m_static_is_p;
+  Tree_mesh m_static, m_moving;
+  double m_margin;
+  Cd_statistics m_stats;
+
+  // query
+  const Sample* m_sp = nullptr;
+  const Sample* m_sq = nullptr;
+  const Direction* m_dirs = nullptr;
+  std::uint32_t m_dir_count = 0, m_dir_first = 0;
+  Vec3<Interval> m_x;
+  std::optional<std::pair<Vec3<Exact_nt>, Exact_nt>> m_exact_x;
+};
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_CD_FILTER_H

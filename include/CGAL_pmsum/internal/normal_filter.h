@@ -1,0 +1,264 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 2 of the pipeline: the normal filter (paper section 5), decided per feature pair.
+//
+// By Kaul and Rossignac, a facet of the boundary of P + Q lies on the sum of
+//   case 1: a facet f of P and a vertex v of Q (or the reverse) with v locally extreme in
+//           the outward direction of f, or
+//   case 2: two non-parallel edges of P and Q that are locally extreme in a common
+//           direction normal to both.
+// We call those the "2D pairs". A boundary point is in the closure of a boundary facet, so
+// the lower-dimensional pairs (cases 3 and 4: vertex-edge, edge-vertex, vertex-vertex) are
+// kept exactly when they lie in the closure of a kept 2D pair, and every other pair
+// (case 5: facet-facet, facet-edge, edge-facet) is dropped. Each kept pair remembers the
+// outward directions of the 2D pairs it came from: the CD filter perturbs the candidate
+// along them.
+//
+// Local extremality is decided exactly. For a vertex we test its edges, as the paper does;
+// that is necessary, not sufficient (the bottom vertex of a pit passes), so the filter may
+// keep a few more pairs than needed but never drops one it must keep. Meshes with borders
+// are surfaces: their facets face both ways and their edges need not be convex.
+
+#ifndef CGAL_PMSUM_INTERNAL_NORMAL_FILTER_H
+#define CGAL_PMSUM_INTERNAL_NORMAL_FILTER_H
+
+#include <CGAL_pmsum/internal/sampling.h>
+
+#include <algorithm>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// An outward direction of a candidate, kept symbolically so that it can be evaluated
+/// with any number type.
+struct Direction
+{
+  enum Kind : std::uint8_t { FACET_OF_P = 0, FACET_OF_Q = 1, EDGES = 2 };
+  Kind kind;
+  std::int8_t sign; // +1 or -1
+  Index a, b;       // facet a (of P or Q), or edge a of P and edge b of Q
+
+  bool operator==(const Direction& o) const
+  { return kind == o.kind && sign == o.sign && a == o.a && b == o.b; }
+  bool operator<(const Direction& o) const
+  {
+    if (kind != o.kind) return kind < o.kind;
+    if (a != o.a) return a < o.a;
+    if (b != o.b) return b < o.b;
+    return sign < o.sign;
+  }
+
+  template <class NT>
+  Vec3<NT> vector(const Mesh_data& P, const Mesh_data& Q) const
+  {
+    Vec3<NT> n = kind == FACET_OF_P ? P.triangle_normal<NT>(a)
+               : kind == FACET_OF_Q ? Q.triangle_normal<NT>(a)
+                                    : cross(P.edge_vector<NT>(a), Q.edge_vector<NT>(b));
+    return sign > 0 ? n : Vec3<NT>{-n[0], -n[1], -n[2]};
+  }
+};
+
+/// A pair of features (one of P, one of Q) whose sample sums are candidates, with the
+/// directions [first_direction, first_direction + number_of_directions) of
+/// Candidate_pairs::directions.
+struct Feature_pair
+{
+  Feature p, q;
+  std::uint32_t first_direction, number_of_directions;
+};
+
+struct Candidate_pairs
+{
+  std::vector<Feature_pair> pairs; // sorted by (p, q): a canonical order
+  std::vector<Direction> directions;
+};
+
+/// Sign of (w - o) . n for mesh points o, w and a direction.
+inline CGAL::Sign side(const Mesh_data& M, Index o, Index w, const Direction& d,
+                       const Mesh_data& P, const Mesh_data& Q)
+{
+  return filtered_sign([&](auto nt) {
+    using NT = decltype(nt);
+    return dot(M.point<NT>(w) - M.point<NT>(o), d.vector<NT>(P, Q));
+  });
+}
+
+/// Is vertex v of M locally extreme in direction d (no incident edge goes up; a flat star
+/// of a closed mesh must also face d)?
+inline bool vertex_is_extreme(const Mesh_data& M, Index v, const Direction& d,
+                              const Mesh_data& P, const Mesh_data& Q)
+{
+  bool all_flat = true;
+  for (Index i = M.vertex_edge_offsets[v]; i < M.vertex_edge_offsets[v + 1]; ++i) {
+    const auto& e = M.edges[M.vertex_edges[i]];
+    const CGAL::Sign s = side(M, v, e.v[0] == v ? e.v[1] : e.v[0], d, P, Q);
+    if (s == CGAL::POSITIVE) return false;
+    all_flat &= (s == CGAL::ZERO);
+  }
+  if (!all_flat || !M.vertex_is_closed(v)) return true;
+  const Index t = M.vertex_triangles[M.vertex_triangle_offsets[v]];
+  return filtered_sign([&](auto nt) {
+           using NT = decltype(nt);
+           return dot(M.triangle_normal<NT>(t), d.vector<NT>(P, Q));
+         }) == CGAL::POSITIVE;
+}
+
+/// Is edge e of M locally extreme in direction d, assumed orthogonal to e?
+inline bool edge_is_extreme(const Mesh_data& M, Index e, const Direction& d,
+                            const Mesh_data& P, const Mesh_data& Q)
+{
+  const auto& edge = M.edges[e];
+  const bool closed = M.edge_is_closed(e);
+  if (closed && !edge.convex) return false;
+  bool all_flat = true;
+  for (Index t : edge.f) {
+    if (t == no_index) continue;
+    const CGAL::Sign s = side(M, edge.v[0], M.opposite_vertex(t, e), d, P, Q);
+    if (s == CGAL::POSITIVE) return false;
+    all_flat &= (s == CGAL::ZERO);
+  }
+  if (!all_flat || !closed) return true;
+  return filtered_sign([&](auto nt) {
+           using NT = decltype(nt);
+           return dot(M.triangle_normal<NT>(edge.f[0]), d.vector<NT>(P, Q));
+         }) == CGAL::POSITIVE;
+}
+
+/// Hash key of a feature pair.
+struct Pair_key
+{
+  std::uint64_t p, q;
+  static Pair_key of(Feature a, Feature b)
+  { return {(std::uint64_t(a.dimension) << 32) | a.index, (std::uint64_t(b.dimension) << 32) | b.index}; }
+  Feature p_feature() const { return {int(p >> 32), Index(p & 0xffffffffu)}; }
+  Feature q_feature() const { return {int(q >> 32), Index(q & 0xffffffffu)}; }
+  bool operator==(const Pair_key& o) const { return p == o.p && q == o.q; }
+};
+struct Pair_key_hash
+{
+  std::size_t operator()(const Pair_key& k) const
+  { return std::hash<std::uint64_t>()(k.p * 0x9E3779B97F4A7C15ull ^ k.q); }
+};
+
+/// The closure of a feature: itself, its edges and its vertices.
+inline std::vector<Feature> closure(const Mesh_data& M, Feature f)
+{
+  std::vector<Feature> out{f};
+  if (f.dimension == 2) {
+    for (Index e : M.triangle_edges[f.index]) out.push_back({1, e});
+    for (Index v : M.triangles[f.index]) out.push_back({0, v});
+  } else if (f.dimension == 1) {
+    for (Index v : M.edges[f.index].v) out.push_back({0, v});
+  }
+  return out;
+}
+
+/// Outward facet directions of triangle t of M (both orientations on a surface).
+inline void facet_directions(const Mesh_data& M, Direction::Kind kind, Index t, std::vector<Direction>& out)
+{
+  out.push_back({kind, 1, t, 0});
+  if (!M.triangle_is_closed(t)) out.push_back({kind, -1, t, 0});
+}
+
+/// The kept feature pairs. Without the normal filter every feature pair is kept; pairs the
+/// filter would have dropped get the facet directions around their features.
+inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_data& Q, bool use_normal_filter)
+{
+  std::unordered_map<Pair_key, std::vector<Direction>, Pair_key_hash> kept;
+  auto keep_closure = [&](Feature fp, Feature fq, const Direction& d) {
+    for (Feature a : closure(P, fp))
+      for (Feature b : closure(Q, fq)) {
+        auto& dirs = kept[Pair_key::of(a, b)];
+        if (std::find(dirs.begin(), dirs.end(), d) == dirs.end()) dirs.push_back(d);
+      }
+  };
+
+  std::vector<Direction> dirs;
+  // Case 1: facet of P and vertex of Q, vertex of P and facet of Q.
+  for (Index t = 0; t < P.number_of_triangles(); ++t) {
+    dirs.clear();
+    facet_directions(P, Direction::FACET_OF_P, t, dirs);
+    for (Index v = 0; v < Q.number_of_vertices(); ++v)
+      for (const Direction& d : dirs)
+        if (Q.vertex_edge_offsets[v] != Q.vertex_edge_offsets[v + 1] && vertex_is_extreme(Q, v, d, P, Q))
+          keep_closure({2, t}, {0, v}, d);
+  }
+  for (Index t = 0; t < Q.number_of_triangles(); ++t) {
+    dirs.clear();
+    facet_directions(Q, Direction::FACET_OF_Q, t, dirs);
+    for (Index v = 0; v < P.number_of_vertices(); ++v)
+      for (const Direction& d : dirs)
+        if (P.vertex_edge_offsets[v] != P.vertex_edge_offsets[v + 1] && vertex_is_extreme(P, v, d, P, Q))
+          keep_closure({0, v}, {2, t}, d);
+  }
+  // Case 2: non-parallel edges extreme in a common normal direction.
+  for (Index a = 0; a < P.number_of_edges(); ++a) {
+    if (P.edge_is_closed(a) && !P.edges[a].convex) continue;
+    for (Index b = 0; b < Q.number_of_edges(); ++b) {
+      if (Q.edge_is_closed(b) && !Q.edges[b].convex) continue;
+      const Direction plus{Direction::EDGES, 1, a, b};
+      bool parallel = true;
+      for (int c = 0; c < 3 && parallel; ++c)
+        parallel = filtered_sign([&](auto nt) { return plus.vector<decltype(nt)>(P, Q)[c]; }) == CGAL::ZERO;
+      if (parallel) continue;
+      for (std::int8_t s : {1, -1}) {
+        const Direction d{Direction::EDGES, s, a, b};
+        if (edge_is_extreme(P, a, d, P, Q) && edge_is_extreme(Q, b, d, P, Q))
+          keep_closure({1, a}, {1, b}, d);
+      }
+    }
+  }
+
+  if (!use_normal_filter) {
+    auto around = [](const Mesh_data& M, Direction::Kind kind, Feature f, std::vector<Direction>& out) {
+      if (f.dimension == 2) return facet_directions(M, kind, f.index, out);
+      if (f.dimension == 1) {
+        for (Index t : M.edges[f.index].f) if (t != no_index) facet_directions(M, kind, t, out);
+        return;
+      }
+      for (Index i = M.vertex_triangle_offsets[f.index]; i < M.vertex_triangle_offsets[f.index + 1]; ++i)
+        facet_directions(M, kind, M.vertex_triangles[i], out);
+    };
+    auto all_features = [](const Mesh_data& M) {
+      std::vector<Feature> fs;
+      for (Index v = 0; v < M.number_of_vertices(); ++v) fs.push_back({0, v});
+      for (Index e = 0; e < M.number_of_edges(); ++e) fs.push_back({1, e});
+      for (Index t = 0; t < M.number_of_triangles(); ++t) fs.push_back({2, t});
+      return fs;
+    };
+    const std::vector<Feature> fp_all = all_features(P), fq_all = all_features(Q);
+    for (Feature a : fp_all)
+      for (Feature b : fq_all) {
+        auto& d = kept[Pair_key::of(a, b)];
+        if (!d.empty()) continue;
+        around(P, Direction::FACET_OF_P, a, d);
+        around(Q, Direction::FACET_OF_Q, b, d);
+      }
+  }
+
+  std::vector<std::pair<Pair_key, std::vector<Direction>*>> sorted;
+  sorted.reserve(kept.size());
+  for (auto& kv : kept) sorted.emplace_back(kv.first, &kv.second);
+  std::sort(sorted.begin(), sorted.end(), [](const auto& x, const auto& y) {
+    return x.first.p != y.first.p ? x.first.p < y.first.p : x.first.q < y.first.q;
+  });
+  Candidate_pairs out;
+  out.pairs.reserve(sorted.size());
+  for (auto& [key, d] : sorted) {
+    std::sort(d->begin(), d->end());
+    out.pairs.push_back({key.p_feature(), key.q_feature(), std::uint32_t(out.directions.size()),
+                         std::uint32_t(d->size())});
+    out.directions.insert(out.directions.end(), d->begin(), d->end());
+  }
+  return out;
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_NORMAL_FILTER_H

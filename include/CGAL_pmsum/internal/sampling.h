@@ -1,0 +1,168 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 1 of the pipeline: deterministic samples with origins.
+//
+// A triangle t is sampled by the lattice {(i a + j b + k c) / N_t : i + j + k = N_t}. The
+// lattice cuts t into N_t^2 copies of t scaled by 1/N_t, and any point of a triangle T is
+// closer to one of T's corners than f(T) = circumradius (T not obtuse) or half the longest
+// edge (T obtuse). Choosing N_t = ceil(f(t) / radius) makes the closed lattice a
+// radius-covering of t. Its interior points are the samples whose origin is the facet.
+//
+// An edge is sampled at the parameters {k / D : 0 < k < D} for D in {N_e, N_t1, N_t2}: its
+// own subdivision N_e = ceil(length / (sqrt(2) radius)) (spacing <= sqrt(2) radius, so that
+// the edge-edge grids of the sum are radius-coverings of their parallelograms) and the
+// boundary points of the lattices of its incident triangles (so that every closed facet
+// lattice is in the sample set). Vertices are samples of their own.
+//
+// Every sample is stored exactly: vertex indices, integer weights and a denominator.
+
+#ifndef CGAL_PMSUM_INTERNAL_SAMPLING_H
+#define CGAL_PMSUM_INTERNAL_SAMPLING_H
+
+#include <CGAL_pmsum/internal/mesh_data.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// Largest lattice denominator; keeps every integer of the exact computations below 2^53.
+constexpr std::int64_t max_denominator = std::int64_t(1) << 20;
+
+/// A vertex, edge or triangle of a mesh.
+struct Feature
+{
+  int dimension; // 0, 1 or 2
+  Index index;
+  bool operator==(const Feature& o) const { return dimension == o.dimension && index == o.index; }
+  bool operator<(const Feature& o) const
+  { return dimension != o.dimension ? dimension < o.dimension : index < o.index; }
+};
+
+/// A sample: the point sum_i weights[i] * vertex(vertices[i]) / denominator, exactly.
+struct Sample
+{
+  Feature origin;
+  std::array<Index, 3> vertices;
+  std::array<std::int32_t, 3> weights;
+  std::int32_t denominator;
+};
+
+/// f(T) of the header comment, computed from the edge lengths.
+inline double triangle_covering_radius(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                       const std::array<double, 3>& c)
+{
+  auto sq = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
+    return (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) + (u[2] - v[2]) * (u[2] - v[2]);
+  };
+  double l[3] = {sq(b, c), sq(c, a), sq(a, b)};
+  std::sort(l, l + 3);
+  if (l[2] >= l[0] + l[1]) return std::sqrt(l[2]) / 2; // right or obtuse
+  const std::array<double, 3> u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const std::array<double, 3> v = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double area2 = std::sqrt(dot(cross(u, v), cross(u, v))); // twice the area
+  return std::sqrt(l[0] * l[1] * l[2]) / (2 * area2);            // abc / (4 area)
+}
+
+/// Lattice resolutions of one mesh for a covering radius.
+class Mesh_sampling
+{
+public:
+  Mesh_sampling(const Mesh_data& mesh, double radius, const std::string& name) : m_mesh(&mesh)
+  {
+    // A small safety factor absorbs the rounding of the double computations of f(T).
+    auto resolution = [&](double length) {
+      const double n = std::ceil(length * (1 + 1e-9) / radius);
+      if (!(n <= double(max_denominator)))
+        throw Invalid_input("d is too small for " + name + ": a feature would need more than " +
+                            std::to_string(max_denominator) + " subdivisions");
+      return std::int32_t((std::max)(1., n));
+    };
+    for (const auto& t : mesh.triangles)
+      m_triangle_n.push_back(resolution(triangle_covering_radius(mesh.points[t[0]], mesh.points[t[1]],
+                                                                 mesh.points[t[2]])));
+    for (const auto& e : mesh.edges) {
+      const auto v = mesh.points[e.v[1]] - mesh.points[e.v[0]];
+      m_edge_n.push_back(resolution(std::sqrt(dot(v, v)) / std::sqrt(2.)));
+    }
+  }
+
+  const Mesh_data& mesh() const { return *m_mesh; }
+  std::int32_t triangle_resolution(Index t) const { return m_triangle_n[t]; }
+
+  /// Appends the samples whose origin is `f` (interior of f only) to `out`.
+  void samples(Feature f, std::vector<Sample>& out) const
+  {
+    if (f.dimension == 0) {
+      out.push_back({f, {f.index, f.index, f.index}, {1, 0, 0}, 1});
+    } else if (f.dimension == 1) {
+      const auto& e = m_mesh->edges[f.index];
+      for_each_edge_parameter(f.index, [&](std::int32_t k, std::int32_t den) {
+        out.push_back({f, {e.v[0], e.v[1], e.v[1]}, {den - k, k, 0}, den});
+      });
+    } else {
+      const std::int32_t n = m_triangle_n[f.index];
+      const auto& t = m_mesh->triangles[f.index];
+      for (std::int32_t i = 1; i < n; ++i)
+        for (std::int32_t j = 1; i + j < n; ++j)
+          out.push_back({f, t, {i, j, n - i - j}, n});
+    }
+  }
+
+  /// Number of samples whose origin is `f`.
+  std::size_t number_of_samples(Feature f) const
+  {
+    if (f.dimension == 0) return 1;
+    if (f.dimension == 1) {
+      std::size_t count = 0;
+      for_each_edge_parameter(f.index, [&](std::int32_t, std::int32_t) { ++count; });
+      return count;
+    }
+    const std::size_t n = std::size_t(m_triangle_n[f.index]);
+    return n < 3 ? 0 : (n - 1) * (n - 2) / 2;
+  }
+
+  /// Total number of samples of the mesh.
+  std::size_t number_of_samples() const
+  {
+    std::size_t count = m_mesh->number_of_vertices();
+    for (Index e = 0; e < m_mesh->number_of_edges(); ++e) count += number_of_samples(Feature{1, e});
+    for (Index t = 0; t < m_mesh->number_of_triangles(); ++t) count += number_of_samples(Feature{2, t});
+    return count;
+  }
+
+private:
+  /// Calls f(k, den) for the distinct parameters k/den in (0, 1) of edge e (see header).
+  template <class F>
+  void for_each_edge_parameter(Index e, const F& f) const
+  {
+    const auto& edge = m_mesh->edges[e];
+    std::int32_t dens[3] = {m_edge_n[e], m_triangle_n[edge.f[0]],
+                            edge.f[1] == no_index ? 1 : m_triangle_n[edge.f[1]]};
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t den = dens[i];
+      bool repeated = false;
+      for (int j = 0; j < i; ++j) repeated |= (dens[j] == den);
+      if (repeated) continue;
+      for (std::int32_t k = 1; k < den; ++k) {
+        bool seen = false; // k/den equal to a parameter of an earlier denominator?
+        for (int j = 0; j < i && !seen; ++j)
+          seen = (std::int64_t(k) * dens[j]) % den == 0;
+        if (!seen) f(k, den);
+      }
+    }
+  }
+
+  const Mesh_data* m_mesh;
+  std::vector<std::int32_t> m_triangle_n, m_edge_n;
+};
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_SAMPLING_H

@@ -1,0 +1,92 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Named parameters specific to CGAL_pmsum, usable like CGAL's own:
+//
+//   CGAL::parameters::use_normal_filter(false).negate_first_mesh(true).vertex_point_map(vpm)
+//
+// CGAL 5.5 has no way to add member functions to CGAL::Named_function_parameters, so the
+// package parameters return a class derived from it: they chain with each other and with
+// every CGAL parameter that follows them. Put them first in a chain.
+
+#ifndef CGAL_PMSUM_NAMED_PARAMETERS_H
+#define CGAL_PMSUM_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal_np {
+enum use_normal_filter_t { use_normal_filter };
+enum use_cd_filter_t { use_cd_filter };
+enum negate_first_mesh_t { negate_first_mesh };
+enum statistics_t { statistics };
+enum maximum_number_of_candidates_t { maximum_number_of_candidates };
+} // namespace internal_np
+
+/// Named parameter pack that also offers the CGAL_pmsum parameters as member functions.
+template <class T, class Tag, class Base = CGAL::internal_np::No_property>
+struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  using Nfp = CGAL::Named_function_parameters<T, Tag, Base>;
+  explicit Named_parameters(const T& v) : Nfp(v) {}
+  Named_parameters(const T& v, const Base& b) : Nfp(v, b) {}
+
+  /// Run the normal filter (default `true`). It removes only pairs whose sum cannot be a
+  /// boundary point; turning it off makes the computation much slower, never more exact.
+  Named_parameters<bool, internal_np::use_normal_filter_t, Named_parameters>
+  use_normal_filter(bool b) const { return {b, *this}; }
+
+  /// Fill `*s` (a CGAL::Pmsum::Statistics) with counters and timings of the run.
+  template <class S>
+  Named_parameters<S*, internal_np::statistics_t, Named_parameters>
+  statistics(S& s) const { return {&s, *this}; }
+
+  /// Throw CGAL::Pmsum::Too_many_candidates before filtering if the normal filter leaves
+  /// more candidates than `n` (default: no limit).
+  Named_parameters<std::size_t, internal_np::maximum_number_of_candidates_t, Named_parameters>
+  maximum_number_of_candidates(std::size_t n) const { return {n, *this}; }
+
+  /// Run the collision-detection filter (default `true`). Without it the output is every
+  /// candidate that passed the other filters, most of them not on the boundary.
+  Named_parameters<bool, internal_np::use_cd_filter_t, Named_parameters>
+  use_cd_filter(bool b) const { return {b, *this}; }
+
+  /// Compute the boundary of (-P) + Q instead of P + Q (default `false`): the contact space
+  /// of a robot P translating among obstacles Q.
+  Named_parameters<bool, internal_np::negate_first_mesh_t, Named_parameters>
+  negate_first_mesh(bool b) const { return {b, *this}; }
+};
+
+} // namespace Pmsum
+
+namespace parameters {
+
+/// \copydoc CGAL::Pmsum::Named_parameters::use_normal_filter
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_normal_filter_t>
+use_normal_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_normal_filter_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::use_cd_filter
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_cd_filter_t>
+use_cd_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_cd_filter_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>
+negate_first_mesh(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::statistics
+template <class S>
+Pmsum::Named_parameters<S*, Pmsum::internal_np::statistics_t>
+statistics(S& s) { return Pmsum::Named_parameters<S*, Pmsum::internal_np::statistics_t>(&s); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::maximum_number_of_candidates
+inline Pmsum::Named_parameters<std::size_t, Pmsum::internal_np::maximum_number_of_candidates_t>
+maximum_number_of_candidates(std::size_t n)
+{ return Pmsum::Named_parameters<std::size_t, Pmsum::internal_np::maximum_number_of_candidates_t>(n); }
+
+} // namespace parameters
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_NAMED_PARAMETERS_H
