@@ -1,0 +1,193 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Small procedural models for the tests, as polygon soups with exact double coordinates,
+// and their conversion to any CGAL face graph. Each shape also knows the convex pieces it
+// is the union of, so that exact reference answers can be built from them.
+
+#ifndef CGAL_PMSUM_TEST_SHAPES_H
+#define CGAL_PMSUM_TEST_SHAPES_H
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Random.h>
+#include <CGAL/convex_hull_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace pmsum_test {
+
+using Point = std::array<double, 3>;
+
+struct Box
+{
+  Point min, max;
+};
+
+/// A triangle soup plus the convex pieces (as point sets) whose union it bounds.
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::vector<Point>> convex_pieces; // union of their hulls = the solid (or surface)
+  std::vector<Box> boxes;                         // same pieces, when they are boxes
+
+  void append(const Soup& o)
+  {
+    const std::size_t off = points.size();
+    points.insert(points.end(), o.points.begin(), o.points.end());
+    for (auto t : o.triangles) triangles.push_back({t[0] + off, t[1] + off, t[2] + off});
+    convex_pieces.insert(convex_pieces.end(), o.convex_pieces.begin(), o.convex_pieces.end());
+    boxes.insert(boxes.end(), o.boxes.begin(), o.boxes.end());
+  }
+};
+
+/// Outward oriented closed box.
+inline Soup box(const Point& lo, const Point& hi)
+{
+  Soup s;
+  for (int i = 0; i < 8; ++i)
+    s.points.push_back({(i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1], (i & 4) ? hi[2] : lo[2]});
+  // quads (counterclockwise seen from outside), split in two triangles
+  const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (auto& f : q) {
+    s.triangles.push_back({std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])});
+    s.triangles.push_back({std::size_t(f[0]), std::size_t(f[2]), std::size_t(f[3])});
+  }
+  s.convex_pieces.push_back(s.points);
+  s.boxes.push_back({lo, hi});
+  return s;
+}
+
+/// The box without its top face (z = hi): a surface with a border.
+inline Soup open_box(const Point& lo, const Point& hi)
+{
+  Soup s = box(lo, hi);
+  s.triangles.erase(s.triangles.begin() + 2, s.triangles.begin() + 4); // the {4,5,7,6} quad
+  s.boxes.clear();
+  s.convex_pieces.clear();
+  // As a surface, it is the union of its five faces (flat convex pieces).
+  const int q[5][4] = {{0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (auto& f : q) s.convex_pieces.push_back({s.points[f[0]], s.points[f[1]], s.points[f[2]], s.points[f[3]]});
+  return s;
+}
+
+/// Convex hull of points, triangulated, outward.
+inline Soup convex_hull(const std::vector<Point>& pts)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<K::Point_3> kp;
+  for (const auto& p : pts) kp.emplace_back(p[0], p[1], p[2]);
+  CGAL::Surface_mesh<K::Point_3> hull;
+  CGAL::convex_hull_3(kp.begin(), kp.end(), hull);
+  Soup s;
+  for (auto v : hull.vertices()) s.points.push_back({hull.point(v).x(), hull.point(v).y(), hull.point(v).z()});
+  for (auto f : hull.faces()) {
+    std::array<std::size_t, 3> t;
+    int i = 0;
+    for (auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) t[i++] = std::size_t(v);
+    s.triangles.push_back(t);
+  }
+  s.convex_pieces.push_back(s.points);
+  return s;
+}
+
+inline Soup tetrahedron(double a = 1)
+{ return convex_hull({{0, 0, 0}, {a, 0, 0}, {0, a, 0}, {0, 0, a}}); }
+
+inline Soup octahedron(double a = 1)
+{ return convex_hull({{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}, {0, 0, a}, {0, 0, -a}}); }
+
+/// Random convex polytope: hull of n points with coordinates on a 1/1024 grid in [-1, 1].
+inline Soup random_convex(int n, unsigned seed)
+{
+  CGAL::Random rng(seed);
+  std::vector<Point> pts;
+  for (int i = 0; i < n; ++i)
+    pts.push_back({rng.get_int(-1024, 1025) / 1024., rng.get_int(-1024, 1025) / 1024.,
+                   rng.get_int(-1024, 1025) / 1024.});
+  return convex_hull(pts);
+}
+
+/// Ellipsoid with semi-axes a, b, c: hull of a latitude-longitude grid of points, rounded
+/// to a 1/4096 grid so that the coordinates stay short.
+inline Soup ellipsoid(double a, double b, double c, int slices = 12, int stacks = 6)
+{
+  std::vector<Point> pts = {{0, 0, c}, {0, 0, -c}};
+  const double pi = std::acos(-1.);
+  auto r = [](double x) { return std::round(x * 4096) / 4096; };
+  for (int i = 1; i < stacks; ++i)
+    for (int j = 0; j < slices; ++j) {
+      const double phi = pi * i / stacks, theta = 2 * pi * j / slices;
+      pts.push_back({r(a * std::sin(phi) * std::cos(theta)), r(b * std::sin(phi) * std::sin(theta)),
+                     r(c * std::cos(phi))});
+    }
+  return convex_hull(pts);
+}
+
+/// L-shaped prism: [0,2]x[0,1]x[0,1] union [0,1]x[0,2]x[0,1], one closed mesh.
+inline Soup l_shape()
+{
+  Soup s;
+  const std::vector<std::array<double, 2>> poly = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  const std::size_t n = poly.size();
+  for (double z : {0., 1.})
+    for (const auto& p : poly) s.points.push_back({p[0], p[1], z});
+  for (std::size_t i = 1; i + 1 < n; ++i) { // fans from vertex 0 (the polygon is star-shaped from it)
+    s.triangles.push_back({0, i + 1, i});             // bottom, facing down
+    s.triangles.push_back({n, n + i, n + i + 1});     // top, facing up
+  }
+  for (std::size_t i = 0; i < n; ++i) {               // sides
+    const std::size_t j = (i + 1) % n;
+    s.triangles.push_back({i, j, n + j});
+    s.triangles.push_back({i, n + j, n + i});
+  }
+  for (const Box& b : {Box{{0, 0, 0}, {2, 1, 1}}, Box{{0, 0, 0}, {1, 2, 1}}}) {
+    s.boxes.push_back(b);
+    s.convex_pieces.push_back(box(b.min, b.max).points);
+  }
+  return s;
+}
+
+/// The paper's blocks (Fig. 6): the black squares of an n x n checkerboard of unit squares,
+/// extruded to height h. Blocks touch their diagonal neighbours along vertical edges, so the
+/// solid is not a manifold; each block is its own closed component, sharing no vertex.
+inline Soup blocks(int n, double h)
+{
+  Soup s;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if ((i + j) % 2 == 0) s.append(box({double(i), double(j), 0}, {double(i + 1), double(j + 1), h}));
+  return s;
+}
+
+/// Converts a soup to a face graph (Surface_mesh, Polyhedron_3, ...).
+template <class Mesh>
+Mesh to_mesh(const Soup& s)
+{
+  using P = typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type;
+  std::vector<P> pts;
+  for (const auto& p : s.points) pts.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::vector<std::size_t>> polys;
+  for (const auto& t : s.triangles) polys.push_back({t[0], t[1], t[2]});
+  Mesh m;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, m);
+  return m;
+}
+
+/// Scales a soup (and its pieces) by a factor and translates it.
+inline Soup transformed(Soup s, double scale, const Point& shift = {0, 0, 0})
+{
+  auto f = [&](Point& p) { for (int c = 0; c < 3; ++c) p[c] = p[c] * scale + shift[c]; };
+  for (auto& p : s.points) f(p);
+  for (auto& piece : s.convex_pieces) for (auto& p : piece) f(p);
+  for (auto& b : s.boxes) { f(b.min); f(b.max); }
+  return s;
+}
+
+} // namespace pmsum_test
+
+#endif // CGAL_PMSUM_TEST_SHAPES_H
