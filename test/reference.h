@@ -30,12 +30,11 @@ struct Exact_convex
 {
   std::vector<std::array<EK::Point_3, 3>> facets; // outward, when full-dimensional
   std::vector<EK::Point_3> vertices;
+  std::vector<std::array<double, 4>> planes; // rounded unit outward normals and offsets
   bool flat = false;
 
-  explicit Exact_convex(const std::vector<Point>& pts)
+  explicit Exact_convex(const std::vector<EK::Point_3>& ep)
   {
-    std::vector<EK::Point_3> ep;
-    for (const auto& p : pts) ep.emplace_back(p[0], p[1], p[2]);
     CGAL::Surface_mesh<EK::Point_3> hull;
     // coplanar input: convex_hull_3 makes a polygon; keep its triangles (both sides count)
     CGAL::convex_hull_3(ep.begin(), ep.end(), hull);
@@ -45,6 +44,13 @@ struct Exact_convex
       int i = 0;
       for (auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) if (i < 3) t[i++] = hull.point(v);
       facets.push_back(t);
+    }
+    for (const auto& t : facets) {
+      auto dbl = [](const EK::Point_3& p) { return IK::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
+      const IK::Point_3 a = dbl(t[0]);
+      IK::Vector_3 n = CGAL::cross_product(dbl(t[1]) - a, dbl(t[2]) - a);
+      n = n / std::sqrt(n.squared_length());
+      planes.push_back({n.x(), n.y(), n.z(), -(n * (a - CGAL::ORIGIN))});
     }
     flat = CGAL::coplanar(vertices[0], vertices[1], vertices[2], vertices.back());
     if (flat) {
@@ -79,25 +85,31 @@ struct Exact_convex
 /// The union of convex polytopes, given by the vertex sums of every pair of pieces.
 struct Reference
 {
+  struct Exact_box { std::array<EK::FT, 3> min, max; };
   std::vector<Exact_convex> pieces;
-  std::vector<Box> boxes; // when every piece is an axis-aligned box: exact interior test
+  std::vector<Exact_box> boxes; // when every piece is an axis-aligned box: exact interior test
 
   Reference(const Soup& P, const Soup& Q, bool negate_p = false)
   {
+    const EK::FT sign(negate_p ? -1 : 1);
     for (const auto& a : P.convex_pieces)
       for (const auto& b : Q.convex_pieces) {
-        std::vector<Point> sums;
+        std::vector<EK::Point_3> sums; // exact: double sums would round
         for (const auto& p : a)
           for (const auto& q : b)
-            sums.push_back({(negate_p ? -p[0] : p[0]) + q[0], (negate_p ? -p[1] : p[1]) + q[1],
-                            (negate_p ? -p[2] : p[2]) + q[2]});
+            sums.emplace_back(sign * p[0] + q[0], sign * p[1] + q[1], sign * p[2] + q[2]);
         pieces.emplace_back(sums);
       }
     if (!negate_p && P.boxes.size() == P.convex_pieces.size() && Q.boxes.size() == Q.convex_pieces.size())
       for (const auto& a : P.boxes)
-        for (const auto& b : Q.boxes)
-          boxes.push_back({{a.min[0] + b.min[0], a.min[1] + b.min[1], a.min[2] + b.min[2]},
-                           {a.max[0] + b.max[0], a.max[1] + b.max[1], a.max[2] + b.max[2]}});
+        for (const auto& b : Q.boxes) {
+          Exact_box e;
+          for (int c = 0; c < 3; ++c) {
+            e.min[c] = EK::FT(a.min[c]) + b.min[c];
+            e.max[c] = EK::FT(a.max[c]) + b.max[c];
+          }
+          boxes.push_back(e);
+        }
   }
 
   /// Is x exactly on the boundary of the union? For unions of boxes the test is complete
@@ -110,15 +122,15 @@ struct Reference
       bool in = false;
       bool covered[8] = {};
       const EK::FT xs[3] = {x.x(), x.y(), x.z()};
-      for (const Box& b : boxes) {
+      for (const Exact_box& b : boxes) {
         bool inside = true;
-        for (int c = 0; c < 3 && inside; ++c) inside = EK::FT(b.min[c]) <= xs[c] && xs[c] <= EK::FT(b.max[c]);
+        for (int c = 0; c < 3 && inside; ++c) inside = b.min[c] <= xs[c] && xs[c] <= b.max[c];
         if (!inside) continue;
         in = true;
         for (int s = 0; s < 8; ++s) {
           bool cov = true;
           for (int c = 0; c < 3 && cov; ++c)
-            cov = (s >> c & 1) ? xs[c] < EK::FT(b.max[c]) : xs[c] > EK::FT(b.min[c]);
+            cov = (s >> c & 1) ? xs[c] < b.max[c] : xs[c] > b.min[c];
           covered[s] |= cov;
         }
       }
@@ -168,14 +180,8 @@ private:
     for (const auto& p : pieces) {
       if (p.flat) continue;
       bool deep = true;
-      for (const auto& t : p.facets) {
-        const IK::Point_3 a(CGAL::to_double(t[0].x()), CGAL::to_double(t[0].y()), CGAL::to_double(t[0].z()));
-        IK::Vector_3 n = CGAL::cross_product(
-          IK::Point_3(CGAL::to_double(t[1].x()), CGAL::to_double(t[1].y()), CGAL::to_double(t[1].z())) - a,
-          IK::Point_3(CGAL::to_double(t[2].x()), CGAL::to_double(t[2].y()), CGAL::to_double(t[2].z())) - a);
-        n = n / std::sqrt(n.squared_length());
-        if ((x - a) * n > -1e-9) { deep = false; break; }
-      }
+      for (const auto& h : p.planes)
+        if (h[0] * x.x() + h[1] * x.y() + h[2] * x.z() + h[3] > -1e-9) { deep = false; break; }
       if (deep) return false;
     }
     return true;

@@ -1,0 +1,124 @@
+// Non-convex, non-manifold and open operands with exactly known sums, and the filters.
+#include "test_support.h"
+
+#include <catch2/catch.hpp>
+
+using namespace pmsum_test;
+
+namespace {
+
+/// Runs P + Q and checks exactness and coverage against the union-of-pieces reference.
+Result check(const Soup& P, const Soup& Q, double d)
+{
+  const Result r = run(P, Q, d);
+  const Reference ref(P, Q);
+  INFO("points " << r.points.size() << ", candidates " << r.stats.candidates);
+  REQUIRE(!r.points.empty());
+  CHECK(exactness_failures(r, ref) == 0);
+  const double cover = coverage_distance(ref.boundary_samples(d / 8), r.points);
+  INFO("coverage " << cover / d << " d");
+  CHECK(cover < d);
+  return r;
+}
+
+/// Number of points strictly inside the open box (lo, hi).
+std::size_t count_in(const std::vector<IK::Point_3>& pts, const Point& lo, const Point& hi)
+{
+  std::size_t n = 0;
+  for (const auto& p : pts) {
+    bool in = true;
+    for (int c = 0; c < 3; ++c) in = in && lo[c] < p[c] && p[c] < hi[c];
+    n += in;
+  }
+  return n;
+}
+
+} // namespace
+
+TEST_CASE("L-shape + cube is a union of two boxes", "[nonconvex]")
+{
+  const Result r = check(l_shape(), box({0, 0, 0}, {0.5, 0.5, 0.5}), 0.1);
+  // The normal filter keeps inner candidates here (the reflex edge): the CD filter removes them.
+  CHECK(r.points.size() < r.stats.candidates);
+}
+
+TEST_CASE("L-shape + cube, records report the reflex crease exactly", "[nonconvex]")
+{
+  // The sum's reflex edge is the segment x = y = 1.5, z in [0, 1.5].
+  const Result r = run(l_shape(), box({0, 0, 0}, {0.5, 0.5, 0.5}), 0.1);
+  std::size_t on_crease = 0;
+  for (const auto& x : r.exact) on_crease += (x.x() == 1.5 && x.y() == 1.5);
+  CHECK(on_crease >= 10);
+}
+
+TEST_CASE("paper's blocks (non-manifold) + cube of the square's size", "[nonconvex][blocks]")
+{
+  // 3x3 checkerboard: the sum is the full box [0,4]x[0,4]x[0,1.5]. Where four block sums
+  // meet along a vertical line, (-P + x) touches the cube on all four sides and the
+  // unperturbed CD test would report a (false) boundary point: there must be none inside.
+  const Soup B = blocks(3, 0.5), C = box({0, 0, 0}, {1, 1, 1});
+  const Result r = check(B, C, 0.125);
+  CHECK(count_in(r.points, {0.01, 0.01, 0.01}, {3.99, 3.99, 1.49}) == 0);
+}
+
+TEST_CASE("paper's blocks + 0.95 cube: the narrow columns appear", "[nonconvex][blocks]")
+{
+  const Soup B = blocks(3, 0.5), C = box({0, 0, 0}, {0.95, 0.95, 0.95});
+  const Result r = check(B, C, 0.125);
+  // Column between the sums of blocks (0,0), (1,1), (2,0) and (1,-1) at x in (1.95, 2),
+  // y in (0.95, 1): a vertical tunnel of width 0.05 through the whole height.
+  CHECK(count_in(r.points, {1.9, 0.9, 0.1}, {2.05, 1.05, 1.35}) > 0);
+}
+
+TEST_CASE("open cube + ellipsoid: a surface plus a solid (paper Fig. 7)", "[nonconvex][open]")
+{
+  const Soup S = open_box({0, 0, 0}, {1, 1, 1}), E = ellipsoid(0.2, 0.15, 0.1);
+  const Result r = check(S, E, 0.05);
+  // The walls thicken by the ellipsoid (0.2 in x, 0.15 in y, 0.1 in z) on both sides; the
+  // inside stays hollow and the top stays open.
+  CHECK(count_in(r.points, {0.21, 0.16, 0.11}, {0.79, 0.84, 1.2}) == 0);  // hollow inside
+  CHECK(count_in(r.points, {0.19, 0.3, 0.3}, {0.21, 0.7, 0.7}) > 0);     // inner offset of x = 0
+  CHECK(count_in(r.points, {-0.21, 0.3, 0.3}, {-0.19, 0.7, 0.7}) > 0);   // outer offset of x = 0
+  CHECK(count_in(r.points, {0.3, 0.3, 0.09}, {0.7, 0.7, 0.11}) > 0);     // inner offset of the floor
+}
+
+TEST_CASE("the normal filter removes only pairs the CD filter would not need", "[filters]")
+{
+  const Soup P = l_shape(), Q = tetrahedron(0.6);
+  const double d = 0.2;
+  const Result on = run(P, Q, d);
+  const Result off = run(P, Q, d, CGAL::parameters::use_normal_filter(false));
+  const Reference ref(P, Q);
+  REQUIRE(off.stats.candidates > 3 * on.stats.candidates);
+  CHECK(exactness_failures(off, ref) == 0);
+  // Every point found with the filter is found without it ...
+  CHECK(coverage_distance(on.points, off.points) == 0);
+  // ... and what the unfiltered run adds does not reach boundary the filtered run missed.
+  CHECK(coverage_distance(off.points, on.points) < d);
+  const auto samples = ref.boundary_samples(d / 8);
+  CHECK(coverage_distance(samples, on.points) < d);
+}
+
+TEST_CASE("without the CD filter the output is every candidate", "[filters]")
+{
+  const Soup P = l_shape(), Q = tetrahedron(0.6);
+  const Result with_cd = run(P, Q, 0.2);
+  const Result no_cd = run(P, Q, 0.2, CGAL::parameters::use_cd_filter(false));
+  CHECK(no_cd.points.size() == with_cd.stats.candidates);
+  CHECK(no_cd.stats.cd_queries == 0);
+  CHECK(coverage_distance(with_cd.points, no_cd.points) == 0);
+  const Reference ref(P, Q);
+  CHECK(exactness_failures(no_cd, ref) > 0); // inner points are there
+}
+
+TEST_CASE("contact space: -P + Q of an L and a box", "[nonconvex][negate]")
+{
+  // -L is the union of the negated boxes: check exactness through the generic pieces test.
+  const Soup P = l_shape(), Q = box({0, 0, 0}, {0.5, 0.5, 0.5});
+  const Result r = run(P, Q, 0.1, CGAL::parameters::negate_first_mesh(true));
+  const Reference ref(P, Q, /*negate=*/true);
+  REQUIRE(!r.points.empty());
+  CHECK(exactness_failures(r, ref) == 0);
+  CHECK(coverage_distance(ref.boundary_samples(0.1 / 8), r.points) < 0.1);
+  for (const auto& rec : r.records) REQUIRE(rec.negated_p);
+}
