@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# Tests of the pmsum command-line tool: good runs, and bad input that must give a one-line
+# error, a non-zero exit code and no output file.
+#   cli_test.sh PMSUM_BINARY DATA_DIR
+set -u
+pmsum=$1
+data=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+ok() { passed=$((passed + 1)); }
+ko() { failed=$((failed + 1)); echo "FAILED: $*"; }
+
+# expect_fail CODE PATTERN -- ARGS... : exit code CODE, stderr matches PATTERN, no $work/out.*
+expect_fail() {
+  local code=$1 pattern=$2
+  shift 3
+  rm -f "$work"/out.*
+  "$pmsum" "$@" > "$work/stdout" 2> "$work/stderr"
+  local got=$?
+  if [ "$got" != "$code" ]; then ko "exit $got, expected $code: pmsum $*"; cat "$work/stderr"; return; fi
+  if ! grep -q -- "$pattern" "$work/stderr"; then ko "stderr lacks '$pattern': pmsum $*"; cat "$work/stderr"; return; fi
+  if [ "$(grep -vc "note:" "$work/stderr")" -gt 1 ]; then ko "error is not one line: pmsum $*"; cat "$work/stderr"; return; fi
+  if ls "$work"/out.* > /dev/null 2>&1; then ko "output file left behind: pmsum $*"; return; fi
+  ok
+}
+
+tet="$data/tetrahedron.off"
+cube="$work/cube.off"
+cat > "$cube" <<'EOF'
+OFF
+8 6 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+4 0 3 2 1
+4 4 5 6 7
+4 0 1 5 4
+4 1 2 6 5
+4 2 3 7 6
+4 3 0 4 7
+EOF
+
+# --- good runs -------------------------------------------------------------------------
+"$pmsum" sum "$cube" "$tet" -d 0.2 -o "$work/ok.xyz" --json "$work/ok.json" 2> "$work/stderr"
+if [ $? = 0 ] && grep -q "triangulated 6 non-triangle faces" "$work/stderr" \
+   && grep -q "reversed 4 of 4 faces" "$work/stderr"; then ok; else ko "quads + inward tetrahedron"; cat "$work/stderr"; fi
+n=$(wc -l < "$work/ok.xyz")
+if grep -q "\"output_points\": $n," "$work/ok.json" && [ "$n" -gt 100 ]; then ok; else ko "xyz lines ($n) vs JSON"; fi
+for key in '"samples"' '"candidates"' '"cd_queries"' '"normal_filter"' '"cd_filter"' '"total"'; do
+  if grep -q "$key" "$work/ok.json"; then ok; else ko "JSON lacks $key"; fi
+done
+# every xyz line: six numbers, unit normal
+if awk 'NF != 6 { bad = 1 } { l = $4*$4 + $5*$5 + $6*$6; if (l < 0.999999 || l > 1.000001) bad = 1 } END { exit bad }' "$work/ok.xyz"; then ok; else ko "xyz format"; fi
+# cube [0,1]^3 + tetrahedron of size 1 at the origin: the sum lies in [0,2]^3, and its
+# bounding box is exactly [0,2]^3
+if awk '{ for (i = 1; i <= 3; ++i) { if ($i < lo[i] || NR == 1) lo[i] = $i; if ($i > hi[i] || NR == 1) hi[i] = $i } }
+        END { for (i = 1; i <= 3; ++i) if (lo[i] != 0 || hi[i] != 2) exit 1 }' "$work/ok.xyz"; then ok; else ko "bounding box of cube + tetrahedron"; fi
+
+"$pmsum" sum "$cube" "$tet" -d 0.01 --relative -o "$work/ok.ply" --quiet 2> "$work/stderr"
+count=$(head -c 400 "$work/ok.ply" | grep -a "element vertex" | awk '{print $3}')
+size=$(stat -c %s "$work/ok.ply")
+header=$(head -c 400 "$work/ok.ply" | grep -a -b "end_header" | cut -d: -f1)
+if [ -n "$count" ] && [ $((size - header - 11)) = $((count * 48)) ] && [ ! -s "$work/stderr" ]; then ok; else ko "binary PLY size ($size, $count points)"; fi
+
+"$pmsum" sum "$cube" "$tet" -d 0.2 --negate-p --no-normal-filter -o "$work/neg.xyz" --quiet && ok || ko "--negate-p --no-normal-filter"
+"$pmsum" sum "$cube" "$tet" -d 0.2 --no-cd-filter -o "$work/nocd.xyz" --quiet && ok || ko "--no-cd-filter"
+if [ "$(wc -l < "$work/nocd.xyz")" -ge "$n" ]; then ok; else ko "--no-cd-filter writes every candidate"; fi
+
+# Non-manifold input (two cubes sharing an edge, as one soup) and an open mesh.
+cat > "$work/two.off" <<'EOF'
+OFF
+14 12 0
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+0 0 1
+1 0 1
+1 1 1
+0 1 1
+2 1 0
+2 2 0
+1 2 0
+2 1 1
+2 2 1
+1 2 1
+4 0 3 2 1
+4 4 5 6 7
+4 0 1 5 4
+4 1 2 6 5
+4 2 3 7 6
+4 3 0 4 7
+4 2 10 9 8
+4 6 11 12 13
+4 2 8 11 6
+4 8 9 12 11
+4 9 10 13 12
+4 10 2 6 13
+EOF
+"$pmsum" sum "$work/two.off" "$tet" -d 0.2 -o "$work/two.xyz" --quiet && ok || ko "non-manifold blocks"
+"$pmsum" sum "$data/open_cube.off" "$data/ellipsoid.off" -d 0.05 --relative -o "$work/open.xyz" --quiet && ok || ko "open cube + ellipsoid"
+
+# --- bad input --------------------------------------------------------------------------
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/truncated.off"
+printf 'this is not a mesh\n' > "$work/garbage.off"
+printf 'OFF\n0 0 0\n' > "$work/empty.off"
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\nnan 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' > "$work/nan.off"
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 1\n3 0 1 3\n3 1 0 2\n' > "$work/degenerate.off"
+
+expect_fail 1 "no such file"  -- sum "$work/missing.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "malformed"     -- sum "$work/garbage.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "P ("            -- sum "$work/truncated.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "no faces"      -- sum "$work/empty.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "Q ("            -- sum "$tet" "$work/nan.off" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "degenerate"    -- sum "$tet" "$work/degenerate.off" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "unknown format" -- sum "$work/cube.txt" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 2 "positive"      -- sum "$cube" "$tet" -d 0 -o "$work/out.ply"
+expect_fail 2 "positive"      -- sum "$cube" "$tet" -d -1 -o "$work/out.ply"
+expect_fail 2 "needs a number" -- sum "$cube" "$tet" -d abc -o "$work/out.ply"
+expect_fail 2 ".ply or .xyz"  -- sum "$cube" "$tet" -d 0.1 -o "$work/out.txt"
+expect_fail 2 "unknown option" -- sum "$cube" "$tet" -d 0.1 -o "$work/out.ply" --bogus
+expect_fail 2 "two meshes"    -- sum "$cube" -d 0.1 -o "$work/out.ply"
+expect_fail 2 "unknown command" -- frobnicate
+expect_fail 3 "candidate points" -- sum "$data/knot1.off" "$data/elephant.off" -d 0.00002 --relative -o "$work/out.ply"
+expect_fail 1 "too small"     -- sum "$cube" "$tet" -d 1e-9 -o "$work/out.ply" --force
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" = 0 ]
