@@ -9,7 +9,7 @@
 #ifndef CGAL_PMSUM_TEST_REFERENCE_H
 #define CGAL_PMSUM_TEST_REFERENCE_H
 
-#include "shapes.h"
+#include "../src/shapes.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>

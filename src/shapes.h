@@ -1,7 +1,8 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Small procedural models for the tests, as polygon soups with exact double coordinates,
+// Procedural models (tests, validation suite, pmsum generate), as polygon soups with exact
+// double coordinates,
 // and their conversion to any CGAL face graph. Each shape also knows the convex pieces it
 // is the union of, so that exact reference answers can be built from them.
 
