@@ -122,3 +122,31 @@ TEST_CASE("contact space: -P + Q of an L and a box", "[nonconvex][negate]")
   CHECK(coverage_distance(ref.boundary_samples(0.1 / 8), r.points) < 0.1);
   for (const auto& rec : r.records) REQUIRE(rec.negated_p);
 }
+
+TEST_CASE("isolated vertices are ignored", "[nonconvex][robustness]")
+{
+  // A vertex on no face is not part of the solid: with or without the normal filter, no
+  // point may come from it.
+  Mesh P = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  P.add_vertex(IK::Point_3(10, 10, 10));
+  const Mesh Q = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  for (bool normal_filter : {true, false}) {
+    std::vector<IK::Point_3> pts;
+    CGAL::point_minkowski_sum(P, Q, 0.5, std::back_inserter(pts), CGAL::parameters::use_normal_filter(normal_filter));
+    REQUIRE(!pts.empty());
+    for (const auto& p : pts) REQUIRE(p.x() <= 2);
+  }
+}
+
+TEST_CASE("edges parallel to the containment ray", "[nonconvex][robustness]")
+{
+  // The point-in-solid test casts rays along a fixed direction; a solid with edges along it
+  // must still be classified exactly (triangles parallel to the ray are skipped).
+  const Point w = {1.0, 0.7548776662466927, 0.5698402909980532}; // the ray of cd_filter.h
+  const Soup P = convex_hull({{0, 0, 0}, {8 * w[0], 8 * w[1], 8 * w[2]}, {0, 4, 0}, {0, 0, 4}, {4, 0, 0}});
+  const Soup Q = box({-0.25, -0.25, -0.25}, {0.25, 0.25, 0.25});
+  const Result r = run(P, Q, 0.2, CGAL::parameters::negate_first_mesh(true));
+  const Reference ref(P, Q, true);
+  REQUIRE(!r.points.empty());
+  CHECK(exactness_failures(r, ref) == 0);
+}

@@ -72,7 +72,9 @@ struct Tree_mesh
   Triangle_tree tree;
   CGAL::Bbox_3 closed_box;                 // bounding box of the closed components
   bool has_closed = false;
-  std::array<double, 3> ray{};             // a direction parallel to no edge
+  // Ray direction of the point-in-solid test. Any direction works: a triangle parallel to
+  // it is skipped, and for every other triangle the perturbed predicates are not zero.
+  static constexpr std::array<double, 3> ray = {1.0, 0.7548776662466927, 0.5698402909980532};
 
   Tree_mesh(const Mesh_data& m, bool reflect) : mesh(&m)
   {
@@ -89,34 +91,8 @@ struct Tree_mesh
     }
     tree.insert(triangles.cbegin(), triangles.cend());
     tree.build();
-    choose_ray();
   }
 
-private:
-  void choose_ray()
-  {
-    const std::array<std::array<double, 3>, 6> candidates = {{{1.0, 0.7548776662466927, 0.5698402909980532},
-                                                              {0.3183098861837907, 1.0, 0.7071067811865476},
-                                                              {0.5772156649015329, 0.2718281828459045, 1.0},
-                                                              {-1.0, 0.6180339887498949, 0.4142135623730950},
-                                                              {0.8414709848078965, -1.0, 0.1411200080598672},
-                                                              {0.2360679774997897, 0.4472135954999579, -1.0}}};
-    for (const auto& w : candidates) {
-      bool ok = true;
-      for (const auto& e : mesh->edges) {
-        const std::array<double, 3> u = base[e.v[1]] - base[e.v[0]];
-        bool parallel = true;
-        for (int c = 0; c < 3 && parallel; ++c)
-          parallel = filtered_sign([&](auto nt) {
-                       using NT = decltype(nt);
-                       return cross(to_nt<NT>(w), to_nt<NT>(u))[c];
-                     }) == CGAL::ZERO;
-        if (parallel) { ok = false; break; }
-      }
-      if (ok) { ray = w; return; }
-    }
-    throw std::logic_error("CGAL_pmsum: no ray direction avoids the edge directions of a mesh");
-  }
 };
 
 /// Counters of the CD filter, for the summary.
@@ -337,9 +313,12 @@ private:
     if (!solid.has_closed) return false;
     // Conservative box of z.
     std::array<double, 3> lo, hi;
-    for (int c = 0; c < 3; ++c) {
-      const Interval z = Interval(base[c]) + (shift > 0 ? m_x[c] : shift < 0 ? -m_x[c] : Interval(0));
-      lo[c] = z.inf(); hi[c] = z.sup();
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      for (int c = 0; c < 3; ++c) {
+        const Interval z = Interval(base[c]) + (shift > 0 ? m_x[c] : shift < 0 ? -m_x[c] : Interval(0));
+        lo[c] = z.inf(); hi[c] = z.sup();
+      }
     }
     const CGAL::Bbox_3& cb = solid.closed_box;
     for (int c = 0; c < 3; ++c)

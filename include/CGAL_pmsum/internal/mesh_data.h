@@ -74,6 +74,8 @@ struct Mesh_data
   }
   bool triangle_is_closed(Index t) const { return components[triangle_component[t]].closed; }
   bool vertex_is_closed(Index v) const { return components[vertex_component[v]].closed; }
+  /// Vertices on no edge (unused by any face) are ignored by every stage.
+  bool vertex_is_isolated(Index v) const { return vertex_edge_offsets[v] == vertex_edge_offsets[v + 1]; }
   bool edge_is_closed(Index e) const { return vertex_is_closed(edges[e].v[0]); }
 
   template <class NT> Vec3<NT> point(Index v) const { return to_nt<NT>(points[v]); }
@@ -243,16 +245,18 @@ Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
     if (e.f[1] == no_index) m.components[m.vertex_component[e.v[0]]].closed = false;
   for (const auto& t : m.triangles) m.triangle_component.push_back(m.vertex_component[t[0]]);
 
-  // Closed components must bound their volume with outward normals (CGAL's convention).
-  double volume = 0;
-  bool any_closed = false;
-  for (Index t = 0; t < m.triangles.size(); ++t) {
-    if (!m.triangle_is_closed(t)) continue;
-    any_closed = true;
-    const auto a = m.point<double>(m.triangles[t][0]);
-    volume += dot(a, m.triangle_normal<double>(t));
-  }
-  if (any_closed && volume < 0)
+  // Closed components must bound their volume with outward normals (CGAL's convention):
+  // the sign of 6 x their total volume, sum of a . ((b - a) x (c - a)), decided exactly.
+  const bool any_closed = std::any_of(m.components.begin(), m.components.end(),
+                                      [](const Mesh_data::Component& c) { return c.closed; });
+  const CGAL::Sign volume = filtered_sign([&](auto nt) {
+    using NT = decltype(nt);
+    NT sum(0);
+    for (Index t = 0; t < m.triangles.size(); ++t)
+      if (m.triangle_is_closed(t)) sum = sum + dot(m.point<NT>(m.triangles[t][0]), m.triangle_normal<NT>(t));
+    return sum;
+  });
+  if (any_closed && volume == CGAL::NEGATIVE)
     throw Invalid_input(name + " is oriented inward (negative volume); reverse its face "
                         "orientation, e.g. with PMP::reverse_face_orientations");
 

@@ -184,7 +184,7 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
     facet_directions(P, Direction::FACET_OF_P, t, dirs);
     for (Index v = 0; v < Q.number_of_vertices(); ++v)
       for (const Direction& d : dirs)
-        if (Q.vertex_edge_offsets[v] != Q.vertex_edge_offsets[v + 1] && vertex_is_extreme(Q, v, d, P, Q))
+        if (!Q.vertex_is_isolated(v) && vertex_is_extreme(Q, v, d, P, Q))
           keep_closure({2, t}, {0, v}, d);
   }
   for (Index t = 0; t < Q.number_of_triangles(); ++t) {
@@ -192,7 +192,7 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
     facet_directions(Q, Direction::FACET_OF_Q, t, dirs);
     for (Index v = 0; v < P.number_of_vertices(); ++v)
       for (const Direction& d : dirs)
-        if (P.vertex_edge_offsets[v] != P.vertex_edge_offsets[v + 1] && vertex_is_extreme(P, v, d, P, Q))
+        if (!P.vertex_is_isolated(v) && vertex_is_extreme(P, v, d, P, Q))
           keep_closure({0, v}, {2, t}, d);
   }
   // Case 2: non-parallel edges extreme in a common normal direction.
@@ -225,7 +225,8 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
     };
     auto all_features = [](const Mesh_data& M) {
       std::vector<Feature> fs;
-      for (Index v = 0; v < M.number_of_vertices(); ++v) fs.push_back({0, v});
+      for (Index v = 0; v < M.number_of_vertices(); ++v)
+        if (!M.vertex_is_isolated(v)) fs.push_back({0, v});
       for (Index e = 0; e < M.number_of_edges(); ++e) fs.push_back({1, e});
       for (Index t = 0; t < M.number_of_triangles(); ++t) fs.push_back({2, t});
       return fs;

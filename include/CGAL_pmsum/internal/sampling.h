@@ -129,7 +129,8 @@ public:
   /// Total number of samples of the mesh.
   std::size_t number_of_samples() const
   {
-    std::size_t count = m_mesh->number_of_vertices();
+    std::size_t count = 0;
+    for (Index v = 0; v < m_mesh->number_of_vertices(); ++v) count += !m_mesh->vertex_is_isolated(v);
     for (Index e = 0; e < m_mesh->number_of_edges(); ++e) count += number_of_samples(Feature{1, e});
     for (Index t = 0; t < m_mesh->number_of_triangles(); ++t) count += number_of_samples(Feature{2, t});
     return count;

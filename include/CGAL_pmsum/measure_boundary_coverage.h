@@ -1,0 +1,92 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// CGAL::Pmsum::measure_boundary_coverage(): how well a point set covers a surface made of
+// shells (e.g. the exact boundary of a Minkowski sum, outer boundary and voids), shell by
+// shell. Independent of how the surface and the points were computed.
+
+#ifndef CGAL_PMSUM_MEASURE_BOUNDARY_COVERAGE_H
+#define CGAL_PMSUM_MEASURE_BOUNDARY_COVERAGE_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+
+/// One connected boundary surface (triangle soup).
+struct Shell
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  bool is_void = false; ///< bounds a void (hole) of the solid rather than its outside
+};
+
+/// Coverage of one shell.
+struct Shell_coverage
+{
+  bool is_void = false;
+  std::size_t triangles = 0;
+  std::size_t samples = 0;      ///< points of the shell the distance was measured at
+  double worst_distance = 0;    ///< largest distance from a sample to the nearest point
+  std::size_t touched = 0;      ///< samples that have a point closer than d
+  bool covered(double d) const { return worst_distance < d; }
+};
+
+/// Samples every triangle of every shell with the closed lattice of spacing at most
+/// `spacing` (vertices and edges included) and returns, per shell, the largest distance to
+/// the nearest point of `points`, and how many samples have a point closer than `d`.
+/// \pre spacing > 0
+template <class PointRange>
+std::vector<Shell_coverage> measure_boundary_coverage(const std::vector<Shell>& shells, const PointRange& points,
+                                                     double d, double spacing)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Traits = CGAL::Search_traits_3<K>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  std::vector<K::Point_3> pts;
+  for (const auto& p : points) pts.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  Search::Tree tree(pts.begin(), pts.end());
+
+  std::vector<Shell_coverage> out;
+  for (const Shell& s : shells) {
+    Shell_coverage c;
+    c.is_void = s.is_void;
+    c.triangles = s.triangles.size();
+    auto visit = [&](const K::Point_3& x) {
+      ++c.samples;
+      double dist = std::numeric_limits<double>::infinity();
+      if (!pts.empty()) {
+        Search search(tree, x, 1);
+        dist = std::sqrt(search.begin()->second);
+      }
+      c.worst_distance = (std::max)(c.worst_distance, dist);
+      c.touched += (dist < d);
+    };
+    for (const auto& t : s.triangles) {
+      const K::Point_3 a(s.points[t[0]][0], s.points[t[0]][1], s.points[t[0]][2]);
+      const K::Point_3 b(s.points[t[1]][0], s.points[t[1]][1], s.points[t[1]][2]);
+      const K::Point_3 e(s.points[t[2]][0], s.points[t[2]][1], s.points[t[2]][2]);
+      const double longest = std::sqrt((std::max)({CGAL::squared_distance(a, b), CGAL::squared_distance(b, e),
+                                                   CGAL::squared_distance(e, a)}));
+      const int n = (std::max)(1, int(std::ceil(longest / spacing)));
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j)
+          visit(a + (double(i) / n) * (b - a) + (double(j) / n) * (e - a));
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_MEASURE_BOUNDARY_COVERAGE_H
