@@ -7,6 +7,8 @@
 #ifndef CGAL_PMSUM_CLI_COMMON_H
 #define CGAL_PMSUM_CLI_COMMON_H
 
+#include <CGAL_pmsum/point_minkowski_sum.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -25,7 +27,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <algorithm>
 #include <array>
+#include <map>
 #include <vector>
 
 namespace pmsum_cli {
@@ -236,6 +240,49 @@ private:
   std::chrono::steady_clock::time_point m_start;
 };
 
+/// Parsed options of a command: positional arguments, flags and valued options.
+struct Arguments
+{
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> values;
+  std::map<std::string, bool> flags;
+
+  Arguments(int argc, char** argv, int first, const std::vector<std::string>& valued,
+            const std::vector<std::string>& flag_names)
+  {
+    for (int i = first; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1])) && a[1] != '.') {
+        if (std::find(valued.begin(), valued.end(), a) != valued.end()) {
+          if (i + 1 >= argc) throw Usage_error("option " + a + " needs a value");
+          values[a] = argv[++i];
+        } else if (std::find(flag_names.begin(), flag_names.end(), a) != flag_names.end()) {
+          flags[a] = true;
+        } else {
+          throw Usage_error("unknown option " + a);
+        }
+      } else {
+        positional.push_back(a);
+      }
+    }
+  }
+  bool flag(const std::string& f) const { return flags.count(f) != 0; }
+  bool has(const std::string& v) const { return values.count(v) != 0; }
+  double number(const std::string& v) const
+  {
+    const std::string& s = values.at(v);
+    char* end = nullptr;
+    const double x = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0') throw Usage_error("option " + v + " needs a number, got '" + s + "'");
+    return x;
+  }
+};
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
 /// Memory the process may use for output points, from /proc/meminfo (half of MemAvailable).
 inline std::size_t memory_budget_bytes()
 {
@@ -246,6 +293,117 @@ inline std::size_t memory_budget_bytes()
   while (in >> key >> kb >> unit)
     if (key == "MemAvailable:") return kb * 1024 / 2;
   return std::size_t(4) << 30;
+}
+
+/// Options shared by the commands that compute a sum (sum, validate).
+const char* const sum_options_help =
+  "  P, Q                   triangle meshes (.off, .obj, .ply, .stl); other polygons are\n"
+  "                         triangulated, closed meshes oriented outward (with a note)\n"
+  "  -d D                   covering distance (> 0)\n"
+  "  --relative             D is a fraction of the diagonal of the bounding box of P + Q\n"
+  "  --negate-p             boundary of -P + Q (contact space of robot P among obstacles Q)\n"
+  "  --scale-q S            multiply Q's coordinates by S first (e.g. to size a tool)\n"
+  "  --no-normal-filter     test every sample pair with the CD filter (slow)\n"
+  "  --no-cd-filter         keep every candidate of the normal filter (not all on the boundary)\n"
+  "  --force                run even if the estimated output exceeds the available memory\n"
+  "  --quiet                no notes and no progress bar\n";
+const std::vector<std::string> sum_valued = {"-d", "--scale-q"};
+const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter",
+                                            "--force", "--quiet", "--help", "-h"};
+
+using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
+
+/// The inputs of a sum, read and checked.
+struct Sum_input
+{
+  std::string p_path, q_path;
+  Mesh P, Q;
+  double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, force = false, quiet = false;
+};
+
+inline Sum_input read_sum_input(const Arguments& args)
+{
+  if (args.positional.size() != 2) throw Usage_error("two meshes P and Q are needed");
+  if (!args.has("-d")) throw Usage_error("-d D is needed");
+  Sum_input in;
+  in.d_argument = args.number("-d");
+  if (!(in.d_argument > 0) || !std::isfinite(in.d_argument))
+    throw Usage_error("-d must be a positive number, got " + args.values.at("-d"));
+  in.quiet = args.flag("--quiet");
+  in.relative = args.flag("--relative");
+  in.negate = args.flag("--negate-p");
+  in.normal_filter = !args.flag("--no-normal-filter");
+  in.cd_filter = !args.flag("--no-cd-filter");
+  in.force = args.flag("--force");
+  in.p_path = args.positional[0];
+  in.q_path = args.positional[1];
+  const auto start = std::chrono::steady_clock::now();
+  in.P = read_mesh(in.p_path, "P", in.quiet);
+  in.Q = read_mesh(in.q_path, "Q", in.quiet);
+  if (args.has("--scale-q")) {
+    const double s = args.number("--scale-q");
+    if (!(s > 0) || !std::isfinite(s)) throw Usage_error("--scale-q must be a positive number");
+    scale_mesh(in.Q, s);
+  }
+  in.diagonal = sum_diagonal(in.P, in.Q);
+  in.d = in.relative ? in.d_argument * in.diagonal : in.d_argument;
+  in.read_seconds = seconds_since(start);
+  return in;
+}
+
+/// Runs point_minkowski_sum with a progress bar; refuses (exit code 3) a run whose output
+/// would not fit in memory, unless --force.
+inline std::vector<Record> compute_sum(const Sum_input& in, CGAL::Pmsum::Statistics& stats)
+{
+  // Each output point is held in memory before the file is written.
+  const std::size_t limit = in.force ? std::size_t(-1) : memory_budget_bytes() / sizeof(Record);
+  std::vector<Record> records;
+  Progress progress(!in.quiet);
+  std::function<bool(double)> callback = [&](double f) { return progress(f); };
+  try {
+    CGAL::point_minkowski_sum(in.P, in.Q, in.d, std::back_inserter(records),
+                              CGAL::parameters::use_normal_filter(in.normal_filter)
+                                .use_cd_filter(in.cd_filter)
+                                .negate_first_mesh(in.negate)
+                                .statistics(stats)
+                                .maximum_number_of_candidates(limit)
+                                .callback(callback));
+  } catch (const CGAL::Pmsum::Too_many_candidates& e) {
+    std::ostringstream msg;
+    msg << "refused: d = " << in.d << " leaves " << e.candidates << " candidate points (up to "
+        << std::setprecision(3) << double(e.candidates) * sizeof(Record) / double(1 << 30)
+        << " GiB of output), more than the memory available allows; use a larger -d, or --force";
+    throw Refused(msg.str());
+  }
+  return records;
+}
+
+inline std::vector<Oriented_point> oriented_points(const std::vector<Record>& records)
+{
+  std::vector<Oriented_point> out;
+  out.reserve(records.size());
+  for (const Record& r : records)
+    out.push_back({{r.point.x(), r.point.y(), r.point.z()}, {r.normal.x(), r.normal.y(), r.normal.z()}});
+  return out;
+}
+
+/// The JSON fields describing a sum's input and statistics.
+inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stats)
+{
+  Json jp, jq, filters;
+  jp.str("file", in.p_path).integer("vertices", in.P.number_of_vertices())
+    .integer("faces", in.P.number_of_faces()).integer("samples", stats.samples_p);
+  jq.str("file", in.q_path).integer("vertices", in.Q.number_of_vertices())
+    .integer("faces", in.Q.number_of_faces()).integer("samples", stats.samples_q);
+  filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter);
+  Json j;
+  j.object("p", jp).object("q", jq).num("d", in.d).num("d_argument", in.d_argument).boolean("relative", in.relative)
+    .num("sum_bbox_diagonal", in.diagonal).boolean("negate_p", in.negate).object("filters", filters)
+    .integer("feature_pairs", stats.feature_pairs).integer("candidates", stats.candidates)
+    .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
+    .integer("containment_tests", stats.containment_tests).integer("output_points", stats.output_points);
+  return j;
 }
 
 } // namespace pmsum_cli

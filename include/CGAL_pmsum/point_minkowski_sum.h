@@ -78,7 +78,9 @@ inline double seconds_since(Clock::time_point t)
 /// symbolic perturbation, no tolerance), and the output is a `d`-covering of the boundary:
 /// every boundary point has an output point closer than `d`. The samples of P and Q are
 /// `d/2`-coverings, which leaves room for the boundary's concave creases, where the
-/// paper's Theorem 2 alone would not guarantee `d`.
+/// paper's Theorem 2 alone would not guarantee `d`. Exception: in passages of the sum
+/// narrower than the sample spacing, a boundary facet can be a strip without samples
+/// (see the user manual, "Known limits"); `pmsum validate` measures coverage.
 ///
 /// Closed components of a mesh are solids; components with borders are surfaces.
 ///
@@ -97,7 +99,8 @@ inline double seconds_since(Clock::time_point t)
 ///
 /// \pre `d > 0` and finite
 /// \pre P and Q are non-empty triangle meshes without degenerate faces, with finite
-///      coordinates exactly representable as `double`; closed components are oriented outward.
+///      coordinates exactly representable as `double`; closed components are oriented outward
+///      and do not overlap each other (touching and nesting are fine).
 /// Violations throw `CGAL::Pmsum::Invalid_input`; nothing is written to `out` then.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMeshP, class PolygonMeshQ,
           class OutputIterator, class NamedParametersP = parameters::Default_named_parameters,
