@@ -11,6 +11,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -70,12 +72,24 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
   if (ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
     throw Error("cannot read " + what + ": unknown format '." + ext + "' (use .off, .obj, .ply or .stl)");
   if (!std::ifstream(path).good()) throw Error("cannot read " + what + ": no such file or not readable");
+  // A valid mesh is read as it is; only if that fails, CGAL's repairing reader merges
+  // duplicated points and splits non-manifold edges and vertices. (Repairing valid input
+  // would merge the coincident vertices of solids that touch along faces and then drop the
+  // coincident faces, opening the mesh.)
   Mesh m;
   bool ok = false;
   try {
-    ok = PMP::IO::read_polygon_mesh(path, m, CGAL::parameters::verbose(false));
+    ok = CGAL::IO::read_polygon_mesh(path, m, CGAL::parameters::verbose(false)) && CGAL::is_valid_polygon_mesh(m);
   } catch (const std::exception&) {
     ok = false;
+  }
+  if (!ok) {
+    m.clear();
+    try {
+      ok = PMP::IO::read_polygon_mesh(path, m, CGAL::parameters::verbose(false));
+    } catch (const std::exception&) {
+      ok = false;
+    }
   }
   if (!ok) throw Error("cannot read " + what + ": malformed or not a polygon mesh");
   if (m.number_of_faces() == 0) throw Error(what + " has no faces");

@@ -4,17 +4,21 @@
 // pmsum: command-line tool of CGAL_pmsum.
 //
 //   pmsum sum P Q -d D -o OUT [options]     points on the boundary of P + Q
+//   pmsum validate P Q -d D [options]       the same, checked against CGAL's Nef sum
 //
 // Exit codes: 0 success, 1 error (bad input, I/O), 2 command-line mistake, 3 refused
-// (the run would need more memory than the machine has; --force overrides).
+// (the run would need more memory than the machine has; --force overrides), 4 validation
+// found a point off the exact boundary or a shell not covered within d.
 
 #include "cli_common.h"
+#include "shape_presets.h"
 
 #include <cstdlib>
 #include <functional>
 #include <map>
 
 namespace pmsum_cli {
+int command_validate(int argc, char** argv); // validate.cpp
 namespace {
 
 const char* const usage_text =
@@ -22,6 +26,8 @@ const char* const usage_text =
   "\n"
   "commands:\n"
   "  sum P Q -d D -o OUT   points covering the boundary of the Minkowski sum P + Q\n"
+  "  validate P Q -d D     the same, checked against CGAL's exact Nef Minkowski sum\n"
+  "  generate NAME -o OUT  write a procedural model of the validation suite (.off)\n"
   "\n"
   "pmsum <command> --help shows the options of a command.\n";
 
@@ -68,6 +74,27 @@ int command_sum(int argc, char** argv)
   return 0;
 }
 
+int command_generate(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2, {"-o"}, {"--help", "-h", "--list"});
+  if (args.flag("--help") || args.flag("-h") || args.flag("--list")) {
+    std::cout << "usage: pmsum generate NAME -o OUT.off\n\nshapes:";
+    for (const auto& kv : pmsum_test::shape_presets()) std::cout << ' ' << kv.first;
+    std::cout << "\n";
+    return 0;
+  }
+  if (args.positional.size() != 1) throw Usage_error("generate needs one shape name");
+  if (!args.has("-o")) throw Usage_error("generate needs -o OUT.off");
+  pmsum_test::Soup s;
+  try {
+    s = pmsum_test::shape_preset(args.positional[0]);
+  } catch (const std::invalid_argument& e) {
+    throw Usage_error(e.what());
+  }
+  if (!pmsum_test::write_off(s, args.values.at("-o"))) throw Error("cannot write '" + args.values.at("-o") + "'");
+  return 0;
+}
+
 } // namespace
 } // namespace pmsum_cli
 
@@ -79,6 +106,8 @@ int main(int argc, char** argv)
     const std::string command = argv[1];
     if (command == "--help" || command == "-h" || command == "help") { std::cout << usage_text; return 0; }
     if (command == "sum") return command_sum(argc, argv);
+    if (command == "validate") return command_validate(argc, argv);
+    if (command == "generate") return command_generate(argc, argv);
     throw Usage_error("unknown command '" + command + "'");
   } catch (const Usage_error& e) {
     std::cerr << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")

@@ -17,8 +17,10 @@
 #include <CGAL_pmsum/measure_boundary_coverage.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/IO/Nef_polyhedron_iostream_3.h>
 #include <CGAL/Nef_polyhedron_3.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -46,8 +48,9 @@ public:
   Nef_minkowski_sum_reference(const MeshP& P, const MeshQ& Q, bool negate_p = false)
   {
     const auto start = std::chrono::steady_clock::now();
-    Nef np = to_nef(P, "P"), nq = to_nef(Q, "Q");
-    if (negate_p) np.transform(Kernel::Aff_transformation_3(CGAL::SCALING, -1));
+    // -P is built from the negated mesh: Nef's transform() with a reflection leaves a
+    // polyhedron on which CGAL 5.5's convex decomposition fails an assertion.
+    Nef np = to_nef(P, "P", negate_p), nq = to_nef(Q, "Q", false);
     m_nef = CGAL::minkowski_sum_3(np, nq).regularization();
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -59,7 +62,11 @@ public:
     if (!in && !in.eof()) throw Invalid_input("cannot read the exact Nef boundary");
   }
 
-  void save(std::ostream& out) const { out << m_nef; }
+  void save(std::ostream& out) const
+  {
+    Nef copy = m_nef; // CGAL's operator<< takes a non-const Nef; copies share their data
+    out << copy;
+  }
 
   /// Seconds taken by minkowski_sum_3 (with the conversions), 0 if read from a file.
   double seconds() const { return m_seconds; }
@@ -124,20 +131,22 @@ private:
   /// Union of the Nef polyhedra of the closed components of `pm` (components touching along
   /// edges, as in non-manifold inputs split by CGAL's reader, are merged exactly).
   template <class Mesh>
-  static Nef to_nef(const Mesh& pm, const std::string& name)
+  static Nef to_nef(const Mesh& pm, const std::string& name, bool negate)
   {
     using EMesh = CGAL::Surface_mesh<Point_3>;
     EMesh m;
     auto vpm = get(CGAL::vertex_point, pm);
+    const double s = negate ? -1 : 1;
     auto to_exact = [&](typename boost::graph_traits<Mesh>::vertex_descriptor vd) {
       const auto& p = get(vpm, vd);
-      return Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      return Point_3(s * CGAL::to_double(p.x()), s * CGAL::to_double(p.y()), s * CGAL::to_double(p.z()));
     };
     CGAL::copy_face_graph(pm, m, CGAL::parameters::vertex_point_map(boost::make_function_property_map<
                                                                         typename boost::graph_traits<Mesh>::vertex_descriptor,
                                                                         Point_3>(to_exact)));
     if (!CGAL::is_closed(m))
       throw Invalid_input(name + " has a border: the Nef reference needs closed meshes");
+    if (negate) CGAL::Polygon_mesh_processing::reverse_face_orientations(m);
     std::vector<EMesh> parts;
     CGAL::Polygon_mesh_processing::split_connected_components(m, parts);
     Nef result;

@@ -1,0 +1,172 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// pmsum validate: our point-based sum against CGAL's exact Nef Minkowski sum.
+// Its own translation unit: it is the only one of the tool that compiles CGAL's Nef package.
+
+#include "cli_common.h"
+
+#include <CGAL_pmsum/Nef_minkowski_sum_reference.h>
+#include <CGAL_pmsum/measure_boundary_coverage.h>
+
+#include <fstream>
+
+namespace pmsum_cli {
+
+namespace {
+const std::string validate_help = std::string(
+  "usage: pmsum validate P Q -d D [options]\n"
+  "\n"
+  "Computes the boundary of P + Q exactly with CGAL::minkowski_sum_3 (Nef polyhedra) or\n"
+  "reads it, runs the point-based sum, and reports:\n"
+  "  exactness  output points not exactly on the exact boundary (Nef point location)\n"
+  "  coverage   per shell of the exact boundary (outer boundaries and voids), the largest\n"
+  "             distance from its points (sampled at spacing <= d/8) to the output, / d\n"
+  "  times      ours and Nef's, side by side\n"
+  "Exit code 0 if every point is exact and every shell is covered within d, 4 otherwise.\n"
+  "\n"
+  "  --exact FILE.nef3      read the exact boundary instead of computing it\n"
+  "  --save-exact FILE.nef3 save the exact boundary (CGAL's exact Nef format)\n"
+  "  --save-exact-off FILE.off  save it as a triangle soup (rounded to double)\n"
+  "  --points OUT           write our points (.ply or .xyz)\n"
+  "  --shell-points OUT.xyz write our points with the index of the nearest exact shell\n"
+  "                         in a 7th column (to colour pictures by shell)\n"
+  "  --json FILE            write the report\n") + sum_options_help;
+} // namespace
+
+int command_validate(int argc, char** argv)
+{
+  std::vector<std::string> valued = sum_valued;
+  valued.insert(valued.end(), {"--exact", "--save-exact", "--save-exact-off", "--points", "--shell-points", "--json"});
+  const Arguments args(argc, argv, 2, valued, sum_flags);
+  if (args.flag("--help") || args.flag("-h")) { std::cout << validate_help; return 0; }
+  const auto t_start = std::chrono::steady_clock::now();
+  const Sum_input in = read_sum_input(args);
+
+  // Ours.
+  CGAL::Pmsum::Statistics stats;
+  const auto t_ours = std::chrono::steady_clock::now();
+  const std::vector<Record> records = compute_sum(in, stats);
+  const double ours_seconds = seconds_since(t_ours);
+  if (args.has("--points")) write_points(args.values.at("--points"), oriented_points(records));
+
+  // The exact boundary.
+  std::unique_ptr<CGAL::Pmsum::Nef_minkowski_sum_reference> ref;
+  if (args.has("--exact")) {
+    std::ifstream f(args.values.at("--exact"));
+    if (!f) throw Error("cannot read '" + args.values.at("--exact") + "'");
+    ref = std::make_unique<CGAL::Pmsum::Nef_minkowski_sum_reference>(f);
+  } else {
+    if (!in.quiet) std::cerr << "pmsum: computing the exact sum with CGAL::minkowski_sum_3 (may take minutes)\n";
+    ref = std::make_unique<CGAL::Pmsum::Nef_minkowski_sum_reference>(in.P, in.Q, in.negate);
+  }
+  if (args.has("--save-exact")) {
+    std::ofstream f(args.values.at("--save-exact"));
+    ref->save(f);
+    if (!f) throw Error("cannot write '" + args.values.at("--save-exact") + "'");
+  }
+  if (args.has("--save-exact-off")) {
+    std::vector<std::array<double, 3>> pts;
+    std::vector<std::array<std::size_t, 3>> tris;
+    ref->triangle_soup(pts, tris);
+    std::ofstream f(args.values.at("--save-exact-off"));
+    f << std::setprecision(17) << "OFF\n" << pts.size() << ' ' << tris.size() << " 0\n";
+    for (const auto& p : pts) f << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& t : tris) f << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    if (!f) throw Error("cannot write '" + args.values.at("--save-exact-off") + "'");
+  }
+
+  // Exactness: every point, from its exact representation.
+  const auto t_check = std::chrono::steady_clock::now();
+  std::size_t off_boundary = 0;
+  const auto vpm_p = get(CGAL::vertex_point, in.P);
+  const auto vpm_q = get(CGAL::vertex_point, in.Q);
+  for (const Record& r : records)
+    off_boundary += !ref->is_on_boundary(CGAL::Pmsum::exact_point<CGAL::Pmsum::Nef_minkowski_sum_reference::Kernel>(r, vpm_p, vpm_q));
+
+  // Coverage, shell by shell.
+  const std::vector<CGAL::Pmsum::Shell> shells = ref->shells();
+  std::vector<K::Point_3> points;
+  for (const Record& r : records) points.push_back(r.point);
+  const auto coverage = CGAL::Pmsum::measure_boundary_coverage(shells, points, in.d, in.d / 8);
+  const double check_seconds = seconds_since(t_check);
+
+  if (args.has("--shell-points")) {
+    // nearest shell of each point: by brute force over the shells' vertices is too coarse;
+    // use the shell whose sample set is closest (one kd-tree per shell).
+    using Traits = CGAL::Search_traits_3<K>;
+    using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
+    std::vector<std::unique_ptr<Search::Tree>> trees;
+    for (const auto& s : shells) {
+      std::vector<K::Point_3> sp;
+      for (const auto& t : s.triangles)
+        for (int i = 0; i < 3; ++i) {
+          const auto& a = s.points[t[i]];
+          const auto& b = s.points[t[(i + 1) % 3]];
+          const auto& c = s.points[t[(i + 2) % 3]];
+          sp.emplace_back(a[0], a[1], a[2]);
+          sp.emplace_back((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3);
+        }
+      trees.push_back(std::make_unique<Search::Tree>(sp.begin(), sp.end()));
+    }
+    std::ofstream f(args.values.at("--shell-points"));
+    f << std::setprecision(9);
+    for (const auto& p : points) {
+      std::size_t best = 0;
+      double best_d = HUGE_VAL;
+      for (std::size_t i = 0; i < trees.size(); ++i) {
+        Search s(*trees[i], p, 1);
+        if (s.begin() != s.end() && s.begin()->second < best_d) { best_d = s.begin()->second; best = i; }
+      }
+      f << p.x() << ' ' << p.y() << ' ' << p.z() << " 0 0 0 " << best << '\n';
+    }
+  }
+
+  std::size_t covered = 0, voids = 0;
+  double worst = 0;
+  for (const auto& c : coverage) {
+    covered += c.covered(in.d);
+    voids += c.is_void;
+    worst = (std::max)(worst, c.worst_distance / in.d);
+  }
+  const bool ok = off_boundary == 0 && covered == coverage.size();
+
+  std::cout << std::setprecision(4) << "pmsum validate: " << in.p_path << " + " << in.q_path << (in.negate ? " (negated P)" : "")
+            << ", d = " << in.d << "\n"
+            << "  points            " << records.size() << "\n"
+            << "  exactness         " << off_boundary << " points not on the exact boundary\n"
+            << "  shells            " << coverage.size() << " (" << voids << " voids), " << covered << " covered within d\n"
+            << "  worst coverage    " << worst << " d\n";
+  for (std::size_t i = 0; i < coverage.size(); ++i)
+    std::cout << "    shell " << i << (coverage[i].is_void ? " (void) " : " (outer) ") << coverage[i].triangles
+              << " triangles: worst " << coverage[i].worst_distance / in.d << " d, "
+              << coverage[i].touched << "/" << coverage[i].samples << " samples within d\n";
+  std::cout << "  seconds           ours " << ours_seconds << ", Nef " << ref->seconds()
+            << (args.has("--exact") ? " (read from file)" : "") << ", ratio "
+            << (ours_seconds > 0 && ref->seconds() > 0 ? ref->seconds() / ours_seconds : 0) << "\n"
+            << "  verdict           " << (ok ? "OK" : "FAILED") << "\n";
+
+  if (args.has("--json")) {
+    Json j = sum_summary(in, stats);
+    Json shells_json;
+    std::string arr = "[";
+    for (std::size_t i = 0; i < coverage.size(); ++i) {
+      Json s;
+      s.boolean("void", coverage[i].is_void).integer("triangles", coverage[i].triangles)
+        .integer("samples", coverage[i].samples).num("worst_over_d", coverage[i].worst_distance / in.d)
+        .integer("samples_within_d", coverage[i].touched).boolean("covered", coverage[i].covered(in.d));
+      arr += (i ? ", " : "") + s.dump(2);
+    }
+    arr += "]";
+    Json seconds;
+    seconds.num("ours", ours_seconds).num("nef", ref->seconds()).num("checks", check_seconds).num("total", seconds_since(t_start));
+    j.str("command", "validate").integer("exactness_failures", off_boundary)
+      .integer("shells", coverage.size()).integer("void_shells", voids).integer("shells_covered", covered)
+      .num("worst_coverage_over_d", worst).add("shell_coverage", arr).boolean("nef_from_file", args.has("--exact"))
+      .object("seconds", seconds).boolean("ok", ok);
+    write_json(args.values.at("--json"), j);
+  }
+  return ok ? 0 : 4;
+}
+
+} // namespace pmsum_cli
