@@ -18,6 +18,10 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <unistd.h>
 
 #include <chrono>
@@ -27,6 +31,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <thread>
 #include <stdexcept>
 #include <string>
 #include <algorithm>
@@ -319,9 +324,10 @@ const char* const sum_options_help =
   "  --scale-q S            multiply Q's coordinates by S first (e.g. to size a tool)\n"
   "  --no-normal-filter     test every sample pair with the CD filter (slow)\n"
   "  --no-cd-filter         keep every candidate of the normal filter (not all on the boundary)\n"
+  "  --threads N            worker threads (default: all cores; 1 = sequential)\n"
   "  --force                run even if the estimated output exceeds the available memory\n"
   "  --quiet                no notes and no progress bar\n";
-const std::vector<std::string> sum_valued = {"-d", "--scale-q"};
+const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads"};
 const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter",
                                             "--force", "--quiet", "--help", "-h"};
 
@@ -334,6 +340,7 @@ struct Sum_input
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
   bool relative = false, negate = false, normal_filter = true, cd_filter = true, force = false, quiet = false;
+  int threads = 0; // 0: all cores
 };
 
 inline Sum_input read_sum_input(const Arguments& args)
@@ -350,6 +357,11 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.normal_filter = !args.flag("--no-normal-filter");
   in.cd_filter = !args.flag("--no-cd-filter");
   in.force = args.flag("--force");
+  if (args.has("--threads")) {
+    const double t = args.number("--threads");
+    if (!(t >= 1) || t != std::floor(t) || t > 1024) throw Usage_error("--threads must be a positive integer");
+    in.threads = int(t);
+  }
   in.p_path = args.positional[0];
   in.q_path = args.positional[1];
   const auto start = std::chrono::steady_clock::now();
@@ -375,14 +387,21 @@ inline std::vector<Record> compute_sum(const Sum_input& in, CGAL::Pmsum::Statist
   std::vector<Record> records;
   Progress progress(!in.quiet);
   std::function<bool(double)> callback = [&](double f) { return progress(f); };
+  const auto np = CGAL::parameters::use_normal_filter(in.normal_filter)
+                    .use_cd_filter(in.cd_filter)
+                    .negate_first_mesh(in.negate)
+                    .statistics(stats)
+                    .maximum_number_of_candidates(limit)
+                    .callback(callback);
   try {
-    CGAL::point_minkowski_sum(in.P, in.Q, in.d, std::back_inserter(records),
-                              CGAL::parameters::use_normal_filter(in.normal_filter)
-                                .use_cd_filter(in.cd_filter)
-                                .negate_first_mesh(in.negate)
-                                .statistics(stats)
-                                .maximum_number_of_candidates(limit)
-                                .callback(callback));
+#ifdef CGAL_LINKED_WITH_TBB
+    if (in.threads != 1) {
+      std::optional<tbb::global_control> limit_threads;
+      if (in.threads > 1) limit_threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(in.threads));
+      CGAL::point_minkowski_sum<CGAL::Parallel_tag>(in.P, in.Q, in.d, std::back_inserter(records), np);
+    } else
+#endif
+      CGAL::point_minkowski_sum<CGAL::Sequential_tag>(in.P, in.Q, in.d, std::back_inserter(records), np);
   } catch (const CGAL::Pmsum::Too_many_candidates& e) {
     std::ostringstream msg;
     msg << "refused: d = " << in.d << " leaves " << e.candidates << " candidate points (up to "
@@ -412,7 +431,9 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("faces", in.Q.number_of_faces()).integer("samples", stats.samples_q);
   filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter);
   Json j;
-  j.object("p", jp).object("q", jq).num("d", in.d).num("d_argument", in.d_argument).boolean("relative", in.relative)
+  const unsigned cores = std::thread::hardware_concurrency();
+  j.object("p", jp).object("q", jq).integer("threads", in.threads ? std::size_t(in.threads) : std::size_t(cores ? cores : 1))
+    .num("d", in.d).num("d_argument", in.d_argument).boolean("relative", in.relative)
     .num("sum_bbox_diagonal", in.diagonal).boolean("negate_p", in.negate).object("filters", filters)
     .integer("feature_pairs", stats.feature_pairs).integer("candidates", stats.candidates)
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)

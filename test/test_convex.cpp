@@ -153,3 +153,27 @@ TEST_CASE("statistics add up", "[convex][statistics]")
   CHECK(r.stats.cd_queries >= r.stats.candidates);
   CHECK(r.stats.feature_pairs > 0);
 }
+
+TEST_CASE("Parallel_tag gives the same points in the same order", "[parallel]")
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  const Mesh mp = to_mesh<Mesh>(l_shape()), mq = to_mesh<Mesh>(random_convex(12, 5));
+  for (bool negate : {false, true}) {
+    std::vector<Record> seq, par;
+    CGAL::Pmsum::Statistics s1, s2;
+    CGAL::point_minkowski_sum<CGAL::Sequential_tag>(mp, mq, 0.1, std::back_inserter(seq),
+                                                     CGAL::parameters::negate_first_mesh(negate).statistics(s1));
+    CGAL::point_minkowski_sum<CGAL::Parallel_tag>(mp, mq, 0.1, std::back_inserter(par),
+                                                   CGAL::parameters::negate_first_mesh(negate).statistics(s2));
+    REQUIRE(seq.size() > 1000);
+    REQUIRE(seq.size() == par.size());
+    for (std::size_t i = 0; i < seq.size(); ++i) {
+      REQUIRE(seq[i].point == par[i].point);
+      REQUIRE(seq[i].normal == par[i].normal);
+    }
+    CHECK(s1.cd_queries == s2.cd_queries);
+  }
+#else
+  WARN("built without TBB: CGAL::Parallel_tag is unavailable");
+#endif
+}

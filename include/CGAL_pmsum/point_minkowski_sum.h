@@ -28,8 +28,16 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <functional>
 #include <type_traits>
 #include <utility>
@@ -84,7 +92,8 @@ inline double seconds_since(Clock::time_point t)
 ///
 /// Closed components of a mesh are solids; components with borders are surfaces.
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (parallel execution comes with `CGAL::Parallel_tag`)
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (TBB: link with
+///         `CGAL::TBB_support`). The output is the same, in the same order, either way.
 /// \tparam PolygonMeshP, PolygonMeshQ models of `FaceListGraph` (e.g. `Surface_mesh`, `Polyhedron_3`)
 /// \tparam OutputIterator receives `Point_3` of the geometric traits, or, if it accepts them,
 ///         `CGAL::Pmsum::Minkowski_sum_boundary_point<PolygonMeshP, PolygonMeshQ, GeomTraits>`
@@ -147,8 +156,8 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
   const in::Mesh_sampling sp(mp, radius, "P"), sq(mq, radius, "Q");
   stats.samples_p = sp.number_of_samples();
   stats.samples_q = sq.number_of_samples();
-  std::optional<in::Cd_filter> cd;
-  if (use_cd_filter) cd.emplace(mp, mq);
+  std::optional<in::Cd_geometry> geometry; // AABB trees
+  if (use_cd_filter) geometry.emplace(mp, mq);
   stats.seconds_setup = in::seconds_since(start);
 
   // Stage 2: normal filter.
@@ -165,11 +174,29 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
   stats.seconds_normal_filter = in::seconds_since(start);
   if (total > max_candidates) throw Pmsum::Too_many_candidates(total, max_candidates);
 
-  // Stage 3: candidates of each kept pair, CD filter, output.
+  // Stage 3: candidates of each kept pair, CD filter, output. Feature pairs are processed
+  // in waves; within a wave, in parallel with CGAL::Parallel_tag. Each pair's kept samples
+  // are buffered, then emitted on this thread in the pairs' order: the output is the same
+  // for any number of threads, and kernel constructions (Epeck's lazy numbers are not
+  // thread-safe) and the callback stay on the calling thread.
   start = in::Clock::now();
-  std::vector<in::Sample> samples_p, samples_q;
-  std::size_t done = 0, next_report = 0;
-  const std::size_t report_step = (std::max<std::size_t>)(1, total / 200);
+  struct Kept { in::Sample p, q; std::uint32_t direction; }; // absolute index in pairs.directions
+  auto filter_pair = [&](std::size_t i, in::Cd_filter* filter, std::vector<Kept>& kept) {
+    const in::Feature_pair& fp = pairs.pairs[i];
+    std::vector<in::Sample> samples_p, samples_q;
+    sp.samples(fp.p, samples_p);
+    sq.samples(fp.q, samples_q);
+    const in::Direction* dirs = pairs.directions.data() + fp.first_direction;
+    for (const in::Sample& s_p : samples_p)
+      for (const in::Sample& s_q : samples_q) {
+        if (!filter) { kept.push_back({s_p, s_q, fp.first_direction}); continue; }
+        for (std::uint32_t k = 0; k < fp.number_of_directions; ++k)
+          if (filter->is_free(s_p, s_q, dirs, fp.number_of_directions, k)) {
+            kept.push_back({s_p, s_q, fp.first_direction + k});
+            break;
+          }
+      }
+  };
   auto coordinate = [&](const in::Mesh_data& M, const in::Sample& s, int c) {
     // FT arithmetic: exact with an exact kernel, rounded otherwise.
     FT v(0);
@@ -177,45 +204,76 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
       if (s.weights[i] != 0) v += FT(s.weights[i]) * FT(M.points[s.vertices[i]][c]);
     return v / FT(s.denominator);
   };
-  for (std::size_t i = 0; i < pairs.pairs.size(); ++i) {
-    const in::Feature_pair& fp = pairs.pairs[i];
-    samples_p.clear();
-    samples_q.clear();
-    sp.samples(fp.p, samples_p);
-    sq.samples(fp.q, samples_q);
-    const in::Direction* dirs = pairs.directions.data() + fp.first_direction;
-    for (const in::Sample& s_p : samples_p)
-      for (const in::Sample& s_q : samples_q) {
-        std::uint32_t chosen = 0;
-        bool keep = !use_cd_filter;
-        for (std::uint32_t k = 0; k < fp.number_of_directions && !keep; ++k)
-          if (cd->is_free(s_p, s_q, dirs, fp.number_of_directions, k)) { keep = true; chosen = k; }
-        if (!keep) continue;
-        ++stats.output_points;
-        const typename GT::Point_3 x(coordinate(mp, s_p, 0) + coordinate(mq, s_q, 0),
-                                     coordinate(mp, s_p, 1) + coordinate(mq, s_q, 1),
-                                     coordinate(mp, s_p, 2) + coordinate(mq, s_q, 2));
-        if constexpr (Pmsum::internal::Accepts_record<OutputIterator, Record>::value) {
-          const auto n = dirs[chosen].template vector<double>(mp, mq);
-          const double len = std::sqrt(in::dot(n, n));
-          Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len),
-                   in::to_mesh_feature(s_p, desc_p), in::to_mesh_feature(s_q, desc_q), negate_p};
-          *out++ = r;
-        } else {
-          *out++ = x;
-        }
-      }
-    done += work[i];
-    if (callback && done >= next_report) {
-      next_report = done + report_step;
-      if (!callback(total == 0 ? 1. : double(done) / double(total))) throw Pmsum::Operation_cancelled();
+  auto emit = [&](const Kept& k) {
+    ++stats.output_points;
+    const typename GT::Point_3 x(coordinate(mp, k.p, 0) + coordinate(mq, k.q, 0),
+                                 coordinate(mp, k.p, 1) + coordinate(mq, k.q, 1),
+                                 coordinate(mp, k.p, 2) + coordinate(mq, k.q, 2));
+    if constexpr (Pmsum::internal::Accepts_record<OutputIterator, Record>::value) {
+      const auto n = pairs.directions[k.direction].template vector<double>(mp, mq);
+      const double len = std::sqrt(in::dot(n, n));
+      Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len), in::to_mesh_feature(k.p, desc_p),
+               in::to_mesh_feature(k.q, desc_q), negate_p};
+      *out++ = r;
+    } else {
+      *out++ = x;
     }
+  };
+
+  constexpr bool parallel =
+#ifdef CGAL_LINKED_WITH_TBB
+    std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#else
+    false;
+#endif
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value || parallel,
+                "CGAL::Parallel_tag needs TBB (link with CGAL::TBB_support)");
+  Pmsum::Statistics cd_stats;
+  auto add_cd_stats = [&](const in::Cd_filter& f) {
+    cd_stats.cd_queries += f.statistics().queries;
+    cd_stats.triangle_pairs += f.statistics().triangle_pairs;
+    cd_stats.containment_tests += f.statistics().containment_tests;
+  };
+  // Waves of about 1/200 of the work (progress granularity), at least one pair each.
+  const std::size_t wave_work = (std::max<std::size_t>)(1, total / 200);
+  std::size_t done = 0;
+  std::vector<std::vector<Kept>> buffers;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::enumerable_thread_specific<in::Cd_filter>> filters;
+  if (parallel && geometry)
+    filters = std::make_unique<tbb::enumerable_thread_specific<in::Cd_filter>>(&*geometry);
+#endif
+  std::optional<in::Cd_filter> sequential_filter;
+  if (!parallel && geometry) sequential_filter.emplace(&*geometry);
+  for (std::size_t first = 0; first < pairs.pairs.size();) {
+    std::size_t last = first, wave = 0;
+    while (last < pairs.pairs.size() && (wave < wave_work || last == first)) wave += work[last++];
+    buffers.assign(last - first, {});
+    if constexpr (parallel) {
+#ifdef CGAL_LINKED_WITH_TBB
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& r) {
+        in::Cd_filter* f = filters ? &filters->local() : nullptr;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) filter_pair(i, f, buffers[i - first]);
+      });
+#endif
+    } else {
+      for (std::size_t i = first; i < last; ++i)
+        filter_pair(i, sequential_filter ? &*sequential_filter : nullptr, buffers[i - first]);
+    }
+    for (const auto& b : buffers)
+      for (const Kept& k : b) emit(k);
+    done += wave;
+    first = last;
+    if (callback && !callback(total == 0 ? 1. : double(done) / double(total))) throw Pmsum::Operation_cancelled();
   }
-  if (cd) {
-    stats.cd_queries = cd->statistics().queries;
-    stats.triangle_pairs = cd->statistics().triangle_pairs;
-    stats.containment_tests = cd->statistics().containment_tests;
-  }
+  if (sequential_filter) add_cd_stats(*sequential_filter);
+#ifdef CGAL_LINKED_WITH_TBB
+  if (filters)
+    for (const in::Cd_filter& f : *filters) add_cd_stats(f);
+#endif
+  stats.cd_queries = cd_stats.cd_queries;
+  stats.triangle_pairs = cd_stats.triangle_pairs;
+  stats.containment_tests = cd_stats.containment_tests;
   stats.seconds_cd_filter = in::seconds_since(start);
   return out;
 }

@@ -103,22 +103,36 @@ struct Cd_statistics
   std::size_t containment_tests = 0;  // ray-parity point-in-solid tests
 };
 
-class Cd_filter
+/// What the collision tests share and never modify: the two meshes in their frames, with
+/// their AABB trees. Built once; read concurrently by every thread's Cd_filter.
+struct Cd_geometry
 {
-public:
-  /// P and Q are the meshes of the sum (P already negated for a contact space).
-  Cd_filter(const Mesh_data& P, const Mesh_data& Q)
-    : m_p(&P), m_q(&Q),
-      m_static_is_p(P.number_of_triangles() >= Q.number_of_triangles()),
-      m_static(m_static_is_p ? P : Q, false),
-      m_moving(m_static_is_p ? Q : P, true)
+  /// P and Q are the meshes of the sum (P already negated for a contact space). The mesh
+  /// with more triangles stays static; the other is reflected and translated.
+  Cd_geometry(const Mesh_data& P, const Mesh_data& Q)
+    : p(&P), q(&Q),
+      static_mesh(P.number_of_triangles() >= Q.number_of_triangles() ? P : Q, false),
+      moving_mesh(P.number_of_triangles() >= Q.number_of_triangles() ? Q : P, true)
   {
     // Margin for the conservative double slab tests of ray traversal.
     double scale = 1;
-    for (const Tree_mesh* tm : {&m_static, &m_moving})
-      for (const auto& p : tm->base) scale = (std::max)({scale, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
-    m_margin = 1e-6 * 4 * scale;
+    for (const Tree_mesh* tm : {&static_mesh, &moving_mesh})
+      for (const auto& x : tm->base) scale = (std::max)({scale, std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
+    margin = 1e-6 * 4 * scale;
   }
+
+  const Mesh_data* p;
+  const Mesh_data* q;
+  Tree_mesh static_mesh, moving_mesh;
+  double margin;
+};
+
+/// One thread's collision tester: the state of the current query and counters.
+class Cd_filter
+{
+public:
+  explicit Cd_filter(const Cd_geometry* g) // shared, not copied: threads construct their own filter
+    : m_p(g->p), m_q(g->q), m_static(g->static_mesh), m_moving(g->moving_mesh), m_margin(g->margin) {}
 
   const Cd_statistics& statistics() const { return m_stats; }
 
@@ -418,8 +432,8 @@ private:
 
   const Mesh_data* m_p;
   const Mesh_data* m_q;
-  bool m_static_is_p;
-  Tree_mesh m_static, m_moving;
+  const Tree_mesh& m_static;
+  const Tree_mesh& m_moving;
   double m_margin;
   Cd_statistics m_stats;
 
