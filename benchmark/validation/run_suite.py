@@ -125,8 +125,9 @@ def main():
         js = os.path.join(RESULTS, name + ".json")
         xyz = os.path.join(work, name + ".xyz")
         is_open = ps in OPEN or qs in OPEN
-        cmd = [pmsum, "sum" if is_open else "validate", p, q, "-d", str(d), "--relative", "--quiet", "--json", js,
-               *extra]
+        # one thread: Nef is sequential, the comparison is per core
+        cmd = [pmsum, "sum" if is_open else "validate", p, q, "-d", str(d), "--relative", "--quiet", "--threads", "1",
+               "--json", js, *extra]
         cmd += ["-o", xyz] if is_open else ["--shell-points", xyz]
         print("suite:", name, flush=True)
         t = time.time()
