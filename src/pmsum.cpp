@@ -13,6 +13,8 @@
 #include "cli_common.h"
 #include "shape_presets.h"
 
+#include <CGAL_pmsum/point_offset.h>
+
 #include <cstdlib>
 #include <functional>
 #include <map>
@@ -27,6 +29,7 @@ const char* const usage_text =
   "commands:\n"
   "  sum P Q -d D -o OUT   points covering the boundary of the Minkowski sum P + Q\n"
   "  validate P Q -d D     the same, checked against CGAL's exact Nef Minkowski sum\n"
+  "  offset MESH -r R -d D -o OUT   points covering the offset (or --erode: erosion) of MESH\n"
   "  generate NAME -o OUT  write a procedural model of the validation suite (.off)\n"
   "\n"
   "pmsum <command> --help shows the options of a command.\n";
@@ -74,6 +77,86 @@ int command_sum(int argc, char** argv)
   return 0;
 }
 
+const char* const offset_help =
+  "usage: pmsum offset MESH -r R -d D -o OUT [options]\n"
+  "\n"
+  "Points covering the boundary of MESH + ball(R) (offset), or with --erode of the set of\n"
+  "points whose ball(R) lies inside MESH (erosion). The ball is a geodesic polyhedron whose\n"
+  "inradius is within --sphere-error (relative, default 0.02) of R: every output point is at\n"
+  "a distance between that inradius and R from the surface (both are reported).\n"
+  "\n"
+  "  -r R                  radius (> 0); with --relative, a fraction of MESH's bbox diagonal\n"
+  "  -d D                  covering distance (> 0); with --relative, a fraction too\n"
+  "  --cube                offset by the cube [-R, R]^3 instead (maximum norm; exact)\n"
+  "  --erode               erosion instead of offset (MESH must be closed)\n"
+  "  --sphere-error E      relative error of the polyhedral ball (default 0.02)\n"
+  "  -o OUT                .ply or .xyz (erosion: normals are 0)\n"
+  "  --json FILE           summary\n"
+  "  --threads N, --quiet  as for sum\n";
+
+int command_offset(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2, {"-r", "-d", "-o", "--sphere-error", "--json", "--threads"},
+                       {"--cube", "--erode", "--relative", "--quiet", "--help", "-h"});
+  if (args.flag("--help") || args.flag("-h")) { std::cout << offset_help; return 0; }
+  if (args.positional.size() != 1) throw Usage_error("offset needs one mesh");
+  for (const char* o : {"-r", "-d", "-o"})
+    if (!args.has(o)) throw Usage_error(std::string("offset needs ") + o);
+  const std::string out_path = args.values.at("-o");
+  if (extension(out_path) != "ply" && extension(out_path) != "xyz") throw Usage_error("-o must name a .ply or .xyz file");
+  double r = args.number("-r"), d = args.number("-d");
+  if (!(r > 0) || !std::isfinite(r) || !(d > 0) || !std::isfinite(d)) throw Usage_error("-r and -d must be positive numbers");
+  const double error = args.has("--sphere-error") ? args.number("--sphere-error") : 0.02;
+  if (!(error > 0 && error < 1)) throw Usage_error("--sphere-error must be in (0, 1)");
+  const bool quiet = args.flag("--quiet");
+  const auto start = std::chrono::steady_clock::now();
+  Mesh P = read_mesh(args.positional[0], "MESH", quiet);
+  if (args.flag("--relative")) {
+    const CGAL::Bbox_3 b = PMP::bbox(P);
+    const double diag = std::sqrt(std::pow(b.xmax() - b.xmin(), 2) + std::pow(b.ymax() - b.ymin(), 2) +
+                                  std::pow(b.zmax() - b.zmin(), 2));
+    r *= diag;
+    d *= diag;
+  }
+  Mesh B;
+  double inner = r;
+  if (args.flag("--cube")) {
+    pmsum_test::Soup c = pmsum_test::box({-r, -r, -r}, {r, r, r});
+    B = pmsum_test::to_mesh<Mesh>(c);
+  } else {
+    inner = CGAL::Pmsum::make_icosphere(r, error, B);
+  }
+  std::vector<Oriented_point> points;
+  CGAL::Pmsum::Statistics stats;
+  if (args.flag("--erode")) {
+    if (!CGAL::is_closed(P)) throw Error("--erode needs a closed mesh");
+    std::vector<K::Point_3> pts;
+    CGAL::Pmsum::point_erosion<CGAL::Sequential_tag>(P, B, d, std::back_inserter(pts));
+    for (const auto& p : pts) points.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
+  } else {
+    Sum_input in;
+    in.P = P;
+    in.Q = B;
+    in.d = d;
+    in.quiet = quiet;
+    if (args.has("--threads")) in.threads = int(args.number("--threads"));
+    points = oriented_points(compute_sum(in, stats));
+  }
+  write_points(out_path, points);
+  if (args.has("--json")) {
+    Json j;
+    j.str("command", "offset").str("mesh", args.positional[0]).boolean("erode", args.flag("--erode"))
+      .str("structuring_element", args.flag("--cube") ? "cube" : "icosphere").num("r", r)
+      .num("ball_inradius", inner).integer("ball_faces", B.number_of_faces()).num("d", d)
+      .integer("output_points", points.size()).num("seconds", seconds_since(start));
+    write_json(args.values.at("--json"), j);
+  }
+  if (!quiet)
+    std::cerr << "pmsum: " << points.size() << " points written to " << out_path << "; every point at distance in ["
+              << std::setprecision(6) << inner << ", " << r << "] from the surface\n";
+  return 0;
+}
+
 int command_generate(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"-o"}, {"--help", "-h", "--list"});
@@ -108,6 +191,7 @@ int main(int argc, char** argv)
     if (command == "sum") return command_sum(argc, argv);
     if (command == "validate") return command_validate(argc, argv);
     if (command == "generate") return command_generate(argc, argv);
+    if (command == "offset") return command_offset(argc, argv);
     throw Usage_error("unknown command '" + command + "'");
   } catch (const Usage_error& e) {
     std::cerr << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")

@@ -23,6 +23,7 @@ enum use_normal_filter_t { use_normal_filter };
 enum use_cd_filter_t { use_cd_filter };
 enum negate_first_mesh_t { negate_first_mesh };
 enum statistics_t { statistics };
+enum treat_as_surface_t { treat_as_surface };
 enum maximum_number_of_candidates_t { maximum_number_of_candidates };
 } // namespace internal_np
 
@@ -38,6 +39,12 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   /// boundary point; turning it off makes the computation much slower, never more exact.
   Named_parameters<bool, internal_np::use_normal_filter_t, Named_parameters>
   use_normal_filter(bool b) const { return {b, *this}; }
+
+  /// Treat every component of this mesh as a surface, closed or not (default `false`): the
+  /// sum is then taken with the surface itself, not with the solid it bounds. (Used for
+  /// erosion: the boundary of surface(P) + ball is the set at distance r from the surface.)
+  Named_parameters<bool, internal_np::treat_as_surface_t, Named_parameters>
+  treat_as_surface(bool b) const { return {b, *this}; }
 
   /// Fill `*s` (a CGAL::Pmsum::Statistics) with counters and timings of the run.
   template <class S>
@@ -75,6 +82,10 @@ use_cd_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np:
 /// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>
 negate_first_mesh(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::treat_as_surface
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::treat_as_surface_t>
+treat_as_surface(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::treat_as_surface_t>(b); }
 
 /// \copydoc CGAL::Pmsum::Named_parameters::statistics
 template <class S>

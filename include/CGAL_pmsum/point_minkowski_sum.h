@@ -103,8 +103,9 @@ inline double seconds_since(Clock::time_point t)
 ///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true),
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
-///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`.
-/// \param np_q named parameters for Q: `vertex_point_map`.
+///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,
+///        `treat_as_surface` (false: closed components of P are solids).
+/// \param np_q named parameters for Q: `vertex_point_map`, `treat_as_surface`.
 ///
 /// \pre `d > 0` and finite
 /// \pre P and Q are non-empty triangle meshes without degenerate faces, with finite
@@ -148,8 +149,10 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
   auto start = in::Clock::now();
   in::Mesh_descriptors<PolygonMeshP> desc_p;
   in::Mesh_descriptors<PolygonMeshQ> desc_q;
-  const in::Mesh_data mp = in::make_mesh_data(P, vpm_p, negate_p, "P", desc_p);
-  const in::Mesh_data mq = in::make_mesh_data(Q, vpm_q, false, "Q", desc_q);
+  const in::Mesh_data mp = in::make_mesh_data(
+    P, vpm_p, negate_p, choose_parameter(get_parameter(np_p, Pmsum::internal_np::treat_as_surface), false), "P", desc_p);
+  const in::Mesh_data mq = in::make_mesh_data(
+    Q, vpm_q, false, choose_parameter(get_parameter(np_q, Pmsum::internal_np::treat_as_surface), false), "Q", desc_q);
 
   // Stage 1: sampling resolutions (samples themselves are generated per pair).
   const double radius = d / 2;

@@ -120,9 +120,10 @@ double exact_double(const FT& x, const std::string& where)
   return d;
 }
 
-/// Copies and checks `pm`. `name` ("P" or "Q") prefixes the error messages.
+/// Copies and checks `pm`. `name` ("P" or "Q") prefixes the error messages. With
+/// `as_surface`, closed components count as surfaces too (no volume).
 template <class PolygonMesh, class VertexPointMap>
-Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
+Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate, bool as_surface,
                          const std::string& name, Mesh_descriptors<PolygonMesh>& desc)
 {
   using GT = boost::graph_traits<PolygonMesh>;
@@ -242,7 +243,7 @@ Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
     }
   }
   for (const auto& e : m.edges)
-    if (e.f[1] == no_index) m.components[m.vertex_component[e.v[0]]].closed = false;
+    if (e.f[1] == no_index || as_surface) m.components[m.vertex_component[e.v[0]]].closed = false;
   for (const auto& t : m.triangles) m.triangle_component.push_back(m.vertex_component[t[0]]);
 
   // Closed components must bound their volume with outward normals (CGAL's convention):

@@ -1,0 +1,144 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Offsetting and erosion with points (paper section 9.2, "Modeling"):
+//   point_offset(P, B, d, out)   points covering the boundary of P + B (B: a ball, a cube, ...)
+//   point_erosion(P, B, d, out)  points covering the boundary of P - B = {x : B + x inside P}
+//   make_icosphere(r, e, mesh)   a polyhedral ball of radius r, within relative error e
+//
+// Erosion without a complement mesh: for B containing the origin in its interior, the
+// boundary of (-B) + surface(P) is the set of x where B + x touches the surface of P without
+// crossing it; the part of it inside P is exactly the boundary of the erosion.
+
+#ifndef CGAL_PMSUM_POINT_OFFSET_H
+#define CGAL_PMSUM_POINT_OFFSET_H
+
+#include <CGAL_pmsum/point_minkowski_sum.h>
+
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+
+/// Fills `out` with a geodesic sphere of radius `r` centred at the origin: an icosahedron
+/// subdivided until its inradius (distance from the centre to its nearest facet plane) is
+/// at least (1 - relative_error) r. Vertices lie on the sphere (rounded to double), so the
+/// polyhedron B satisfies ball(inradius) inside B inside ball(r): P + B lies between the
+/// offsets of P at distances inradius and r. Returns the inradius (a lower bound).
+/// \pre r > 0 and 0 < relative_error < 1
+template <class PolygonMesh>
+double make_icosphere(double r, double relative_error, PolygonMesh& out)
+{
+  if (!(r > 0) || !std::isfinite(r) || !(relative_error > 0 && relative_error < 1))
+    throw Invalid_input("make_icosphere needs r > 0 and 0 < relative_error < 1");
+  using P3 = std::array<double, 3>;
+  const double t = (1 + std::sqrt(5.)) / 2;
+  std::vector<P3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                       {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<std::size_t, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11},
+                                               {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                               {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
+                                               {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  auto project = [r](P3 p) {
+    const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    return P3{p[0] * r / n, p[1] * r / n, p[2] * r / n};
+  };
+  for (auto& p : v) p = project(p);
+  // inradius: smallest distance from the origin to a facet plane (with a rounding margin)
+  auto inradius = [&]() {
+    double m = r;
+    for (const auto& tri : f) {
+      const P3 &a = v[tri[0]], &b = v[tri[1]], &c = v[tri[2]];
+      const P3 u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const P3 n = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      m = (std::min)(m, (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) / len);
+    }
+    return m * (1 - 1e-12);
+  };
+  while (inradius() < (1 - relative_error) * r) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto middle = [&](std::size_t a, std::size_t b) {
+      const auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      v.push_back(project({(v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2}));
+      return mid[key] = v.size() - 1;
+    };
+    std::vector<std::array<std::size_t, 3>> g;
+    for (const auto& tri : f) {
+      const std::size_t ab = middle(tri[0], tri[1]), bc = middle(tri[1], tri[2]), ca = middle(tri[2], tri[0]);
+      g.push_back({tri[0], ab, ca});
+      g.push_back({tri[1], bc, ab});
+      g.push_back({tri[2], ca, bc});
+      g.push_back({ab, bc, ca});
+    }
+    f.swap(g);
+  }
+  using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vd;
+  clear(out);
+  for (const auto& p : v) vd.push_back(add_vertex(Point(p[0], p[1], p[2]), out));
+  for (const auto& tri : f) CGAL::Euler::add_face(std::array{vd[tri[0]], vd[tri[1]], vd[tri[2]]}, out);
+  return inradius();
+}
+
+/// Points covering the boundary of the offset P + B (e.g. B from make_icosphere(), or a cube
+/// for an offset in the maximum norm). Same guarantees and parameters as
+/// point_minkowski_sum(): every point exactly on the boundary of P + B, covering it within d.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, class StructuringMesh, class OutputIterator,
+          class NamedParameters = parameters::Default_named_parameters>
+OutputIterator point_offset(const PolygonMesh& P, const StructuringMesh& B, double d, OutputIterator out,
+                            const NamedParameters& np = parameters::default_values())
+{
+  return point_minkowski_sum<ConcurrencyTag>(P, B, d, out, np);
+}
+
+/// Points covering the boundary of the erosion of the solid P by B, {x : B + x inside P}:
+/// the points of the boundary of (-B) + surface(P) that lie inside P.
+/// \pre B contains the origin in its interior; P is a closed triangle mesh bounding a volume.
+/// The output iterator receives points of P's kernel.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, class StructuringMesh, class OutputIterator>
+OutputIterator point_erosion(const PolygonMesh& P, const StructuringMesh& B, double d, OutputIterator out)
+{
+  using K = typename CGAL::Kernel_traits<typename boost::property_traits<
+    typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type>::Kernel;
+  using Point = typename K::Point_3;
+  if (!CGAL::is_closed(P)) throw Invalid_input("point_erosion needs a closed mesh P");
+  std::vector<Point> boundary;
+  point_minkowski_sum<ConcurrencyTag>(B, P, d, std::back_inserter(boundary),
+                                      parameters::negate_first_mesh(true), parameters::treat_as_surface(true));
+  // Each point is at distance at least the inradius of B from the surface of P, so the
+  // (exact-predicate) side test of its rounded position cannot err.
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  CGAL::Surface_mesh<Epick::Point_3> copy;
+  const auto vpm = get(CGAL::vertex_point, P);
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  auto to_double = [&](vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return Epick::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+  CGAL::copy_face_graph(P, copy, CGAL::parameters::vertex_point_map(
+                                   boost::make_function_property_map<vertex_descriptor, Epick::Point_3>(to_double)));
+  const CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Epick::Point_3>, Epick> side(copy);
+  for (const Point& x : boundary)
+    if (side(Epick::Point_3(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()))) ==
+        CGAL::ON_BOUNDED_SIDE)
+      *out++ = x;
+  return out;
+}
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_POINT_OFFSET_H

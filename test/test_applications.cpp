@@ -1,0 +1,151 @@
+// Applications: offset and erosion against exact answers.
+#include "test_support.h"
+
+#include <CGAL_pmsum/point_offset.h>
+
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+
+#include <catch2/catch.hpp>
+
+using namespace pmsum_test;
+
+namespace {
+/// Distance from x to the surface of the box [lo, hi].
+double distance_to_box_surface(const IK::Point_3& x, double lo, double hi)
+{
+  double out = 0, in = HUGE_VAL;
+  for (int c = 0; c < 3; ++c) {
+    const double e = (std::max)({lo - x[c], 0., x[c] - hi});
+    out += e * e;
+    in = (std::min)({in, x[c] - lo, hi - x[c]});
+  }
+  return out > 0 ? std::sqrt(out) : in;
+}
+} // namespace
+
+TEST_CASE("icosphere: vertices on the sphere, inradius within the error", "[applications][offset]")
+{
+  for (double e : {0.2, 0.02, 0.005}) {
+    Mesh s;
+    const double inner = CGAL::Pmsum::make_icosphere(0.5, e, s);
+    CHECK(inner >= (1 - e) * 0.5);
+    CHECK(inner < 0.5);
+    CHECK(CGAL::is_closed(s));
+    CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(s));
+    for (auto v : s.vertices()) CHECK(std::abs(std::sqrt((s.point(v) - CGAL::ORIGIN).squared_length()) - 0.5) < 1e-15);
+  }
+}
+
+TEST_CASE("offset of a box by a ball: distance r, exact, covered", "[applications][offset]")
+{
+  const double r = 0.25, d = 0.1;
+  Mesh ball;
+  const double inner = CGAL::Pmsum::make_icosphere(r, 0.02, ball);
+  const Mesh cube = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  std::vector<Record> recs;
+  CGAL::Pmsum::point_offset(cube, ball, d, std::back_inserter(recs));
+  REQUIRE(recs.size() > 1000);
+  // every point at distance in [inner, r] from the box (the ball's polygonal error)
+  for (const auto& rec : recs) {
+    const double dist = distance_to_box_surface(rec.point, 0, 1);
+    REQUIRE(dist >= inner - 1e-12);
+    REQUIRE(dist <= r + 1e-12);
+  }
+  // exact: box + convex ball is the hull of the vertex sums
+  Soup ball_soup;
+  for (auto v : ball.vertices()) ball_soup.points.push_back({ball.point(v).x(), ball.point(v).y(), ball.point(v).z()});
+  ball_soup.convex_pieces.push_back(ball_soup.points);
+  const Reference ref(box({0, 0, 0}, {1, 1, 1}), ball_soup);
+  std::size_t bad = 0;
+  for (const auto& rec : recs)
+    bad += !ref.on_boundary(CGAL::Pmsum::exact_point<EK>(rec, get(CGAL::vertex_point, cube), get(CGAL::vertex_point, ball)));
+  CHECK(bad == 0);
+  // covered: the true offset surface (box faces pushed out, quarter cylinders, ball corners)
+  // is within r - inner of the polyhedral one, so within d + (r - inner) of the points.
+  std::vector<IK::Point_3> pts, truth;
+  for (const auto& rec : recs) pts.push_back(rec.point);
+  const int n = 40;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double u = double(i) / n, v = double(j) / n;
+      // faces
+      truth.emplace_back(u, v, -r); truth.emplace_back(u, v, 1 + r);
+      truth.emplace_back(u, -r, v); truth.emplace_back(u, 1 + r, v);
+      truth.emplace_back(-r, u, v); truth.emplace_back(1 + r, u, v);
+      // the edge along x at y = z = 0: quarter cylinder; the corner at the origin: ball octant
+      const double a = v * 1.5707963267948966, b = u * 1.5707963267948966;
+      truth.emplace_back(u, -r * std::cos(a), -r * std::sin(a));
+      truth.emplace_back(-r * std::cos(a) * std::cos(b), -r * std::sin(a) * std::cos(b), -r * std::sin(b));
+    }
+  CHECK(coverage_distance(truth, pts) < d + (r - inner));
+}
+
+TEST_CASE("offset by a cube is exact", "[applications][offset]")
+{
+  const Mesh cube = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1})), c = to_mesh<Mesh>(box({-0.2, -0.2, -0.2}, {0.2, 0.2, 0.2}));
+  std::vector<IK::Point_3> pts;
+  CGAL::Pmsum::point_offset(cube, c, 0.1, std::back_inserter(pts));
+  REQUIRE(!pts.empty());
+  for (const auto& p : pts) {
+    double m = 0;
+    for (int k = 0; k < 3; ++k) m = (std::max)(m, std::abs(p[k] - 0.5));
+    REQUIRE(m == Approx(0.7).margin(1e-15)); // boundary of [-0.2, 1.2]^3
+  }
+}
+
+TEST_CASE("erosion of a box by a ball: exact box, covered", "[applications][erosion]")
+{
+  using EMesh = CGAL::Surface_mesh<EK::Point_3>;
+  const double r = 0.2, d = 0.08;
+  EMesh ball;
+  CGAL::Pmsum::make_icosphere(r, 0.02, ball);
+  const EMesh cube = to_mesh<EMesh>(box({0, 0, 0}, {1, 1, 1}));
+  std::vector<EK::Point_3> pts;
+  CGAL::Pmsum::point_erosion(cube, ball, d, std::back_inserter(pts));
+  REQUIRE(pts.size() > 100);
+  // {x : B + x inside [0,1]^3} = prod [-min_c B, 1 - max_c B], exactly
+  EK::FT lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (auto v : ball.vertices())
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = (std::min)(lo[c], ball.point(v)[c]);
+      hi[c] = (std::max)(hi[c], ball.point(v)[c]);
+    }
+  std::size_t bad = 0;
+  for (const auto& x : pts) {
+    bool inside = true, on = false;
+    for (int c = 0; c < 3; ++c) {
+      inside = inside && -lo[c] <= x[c] && x[c] <= 1 - hi[c];
+      on = on || x[c] == -lo[c] || x[c] == 1 - hi[c];
+    }
+    bad += !(inside && on);
+  }
+  CHECK(bad == 0);
+  // covered: the faces of the eroded box
+  std::vector<IK::Point_3> dp, truth;
+  for (const auto& x : pts) dp.emplace_back(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+  double l[3], h[3];
+  for (int c = 0; c < 3; ++c) { l[c] = CGAL::to_double(-lo[c]); h[c] = CGAL::to_double(1 - hi[c]); }
+  const int n = 30;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double u = double(i) / n, v = double(j) / n;
+      for (int c = 0; c < 3; ++c)
+        for (double side : {l[c], h[c]}) {
+          double p[3];
+          p[c] = side;
+          p[(c + 1) % 3] = l[(c + 1) % 3] + u * (h[(c + 1) % 3] - l[(c + 1) % 3]);
+          p[(c + 2) % 3] = l[(c + 2) % 3] + v * (h[(c + 2) % 3] - l[(c + 2) % 3]);
+          truth.emplace_back(p[0], p[1], p[2]);
+        }
+    }
+  CHECK(coverage_distance(truth, dp) < d);
+}
+
+TEST_CASE("erosion needs a closed mesh", "[applications][erosion]")
+{
+  const Mesh open = to_mesh<Mesh>(open_box({0, 0, 0}, {1, 1, 1}));
+  Mesh ball;
+  CGAL::Pmsum::make_icosphere(0.1, 0.05, ball);
+  std::vector<IK::Point_3> pts;
+  CHECK_THROWS_AS(CGAL::Pmsum::point_erosion(open, ball, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
+}
