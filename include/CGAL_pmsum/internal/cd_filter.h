@@ -141,9 +141,26 @@ public:
   bool is_free(const Sample& p, const Sample& q, const Direction* directions, std::uint32_t count,
                std::uint32_t first)
   {
-    ++m_stats.queries;
     set_query(p, q, directions, count, first);
+    return configuration_is_free();
+  }
 
+  /// Are the meshes disjoint for the translation t (a double point; degenerate contacts are
+  /// decided for t moved infinitesimally along the axes)? I.e. is t outside P + Q?
+  bool is_free_at(const std::array<double, 3>& t)
+  {
+    m_sp = m_sq = nullptr;
+    m_plain = t;
+    m_dirs = nullptr; m_dir_count = 0; m_dir_first = 0;
+    m_exact_x.reset();
+    m_x = to_nt<Interval>(t);
+    return configuration_is_free();
+  }
+
+private:
+  bool configuration_is_free()
+  {
+    ++m_stats.queries;
     // 1. Does a triangle of the moving mesh cross a triangle of the static mesh?
     const Mesh_data& M = *m_moving.mesh;
     for (Index t = 0; t < M.number_of_triangles(); ++t) {
@@ -169,7 +186,6 @@ public:
     return true;
   }
 
-private:
   // ----- query state -------------------------------------------------------------------
   void set_query(const Sample& p, const Sample& q, const Direction* directions, std::uint32_t count,
                  std::uint32_t first)
@@ -194,6 +210,7 @@ private:
   /// S * x exactly, and S.
   const std::pair<Vec3<Exact_nt>, Exact_nt>& exact_x()
   {
+    if (!m_exact_x && !m_sp) m_exact_x.emplace(to_nt<Exact_nt>(m_plain), Exact_nt(1));
     if (!m_exact_x) {
       auto part = [](const Mesh_data& M, const Sample& s, std::int64_t other_den) {
         Vec3<Exact_nt> r = {Exact_nt(0), Exact_nt(0), Exact_nt(0)};
@@ -438,8 +455,9 @@ private:
   Cd_statistics m_stats;
 
   // query
-  const Sample* m_sp = nullptr;
+  const Sample* m_sp = nullptr; // the candidate x = p + q, or
   const Sample* m_sq = nullptr;
+  std::array<double, 3> m_plain{}; // a plain translation (m_sp == nullptr)
   const Direction* m_dirs = nullptr;
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
   Vec3<Interval> m_x;
