@@ -142,3 +142,42 @@ TEST_CASE("cached suite cases: exact and covered, holes included", "[validation]
     CHECK(o.covered == o.shells);
   }
 }
+
+#include <CGAL_pmsum/Penetration_depth.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Random.h>
+
+TEST_CASE("penetration depth of a non-convex pair against the exact Nef contact space", "[validation][pd]")
+{
+  const Mesh P = to_mesh<Mesh>(l_shape()), Q = to_mesh<Mesh>(box({-0.25, -0.25, -0.25}, {0.5, 0.25, 0.25}));
+  const double d = 0.05;
+  auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
+  const Reference_nef ref(P, Q, /*negate_p=*/true); // the contact space -P + Q, exactly
+  // exact depth: distance to the exact boundary (its triangles, rounded: error ~1e-16)
+  std::vector<IK::Triangle_3> tris;
+  for (const auto& s : ref.shells())
+    for (const auto& t : s.triangles)
+      tris.emplace_back(IK::Point_3(s.points[t[0]][0], s.points[t[0]][1], s.points[t[0]][2]),
+                        IK::Point_3(s.points[t[1]][0], s.points[t[1]][1], s.points[t[1]][2]),
+                        IK::Point_3(s.points[t[2]][0], s.points[t[2]][1], s.points[t[2]][2]));
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<IK, CGAL::AABB_triangle_primitive<IK, std::vector<IK::Triangle_3>::iterator>>>;
+  Tree tree(tris.begin(), tris.end());
+  CGAL::Random rng(7);
+  std::size_t inside = 0;
+  for (int i = 0; i < 400; ++i) {
+    const IK::Point_3 t(rng.get_double(-2.5, 0.8), rng.get_double(-2.5, 0.8), rng.get_double(-1.3, 0.3));
+    typename Reference_nef::Nef::Volume_const_handle v;
+    const bool in = CGAL::assign(v, ref.nef().locate(Reference_nef::Point_3(t.x(), t.y(), t.z()))) && v->mark();
+    const auto r = pd.query(t);
+    REQUIRE(r.overlapping == in); // the exact overlap test agrees with Nef
+    if (!in) continue;
+    ++inside;
+    const double exact = std::sqrt(tree.squared_distance(t));
+    REQUIRE(r.depth >= exact - 1e-9);
+    REQUIRE(r.depth < exact + d);
+  }
+  CHECK(inside > 20);
+}
