@@ -82,13 +82,13 @@ def fmt(x, digits=3):
 
 
 def bench_filters(run):
-    d = 0.02
+    d = 0.05  # "CD only" tests every sample pair: m * n queries
     rows, labels, t_cd, t_n, q_cd, q_n = [], [], [], [], [], []
     for pair in ["l-shape+tetrahedron", "cross+star", "hooks", "blocks+cube", "difficult-void", "frame+knot",
                  "knot1+tetrahedron", "elephant+octahedron"]:
         print("filters:", pair, flush=True)
         n = run.sum(pair, d)
-        c = run.sum(pair, d, ["--no-normal-filter"], timeout=900)
+        c = run.sum(pair, d, ["--no-normal-filter"], timeout=600)
         rows.append([pair, n["p"]["samples"], n["q"]["samples"], n["output_points"],
                      fmt(c and c["seconds"]["total"]), c and c["cd_queries"] or "timeout",
                      fmt(n["seconds"]["total"]), n["cd_queries"], "not built",

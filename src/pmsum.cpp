@@ -15,6 +15,7 @@
 
 #include <CGAL_pmsum/Penetration_depth.h>
 #include <CGAL_pmsum/point_offset.h>
+#include <CGAL_pmsum/point_sweep.h>
 
 #include <cstdlib>
 #include <functional>
@@ -31,6 +32,7 @@ const char* const usage_text =
   "  sum P Q -d D -o OUT   points covering the boundary of the Minkowski sum P + Q\n"
   "  validate P Q -d D     the same, checked against CGAL's exact Nef Minkowski sum\n"
   "  offset MESH -r R -d D -o OUT   points covering the offset (or --erode: erosion) of MESH\n"
+  "  sweep MESH --path F -d D -o OUT   points covering the volume swept along a polyline\n"
   "  pd P Q -d D --at X Y Z  penetration depth of P translated by (X, Y, Z) into Q\n"
   "  generate NAME -o OUT  write a procedural model of the validation suite (.off)\n"
   "\n"
@@ -218,6 +220,73 @@ int command_pd(int argc, char** argv)
   return 0;
 }
 
+const char* const sweep_help =
+  "usage: pmsum sweep MESH --path FILE -d D -o OUT [--relative] [--json FILE] [--threads N] [--quiet]\n"
+  "\n"
+  "Points covering the boundary of the volume swept by MESH translating along a polyline\n"
+  "(MESH + path), every point exactly on it. FILE: one point 'x y z' per line, in order\n"
+  "(the positions of MESH's origin). With --relative, D is a fraction of the diagonal of\n"
+  "the swept volume's bounding box.\n";
+
+int command_sweep(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2, {"--path", "-d", "-o", "--json", "--threads"},
+                       {"--relative", "--quiet", "--help", "-h"});
+  if (args.flag("--help") || args.flag("-h")) { std::cout << sweep_help; return 0; }
+  if (args.positional.size() != 1) throw Usage_error("sweep needs one mesh");
+  for (const char* o : {"--path", "-d", "-o"})
+    if (!args.has(o)) throw Usage_error(std::string("sweep needs ") + o);
+  const std::string out_path = args.values.at("-o");
+  if (extension(out_path) != "ply" && extension(out_path) != "xyz") throw Usage_error("-o must name a .ply or .xyz file");
+  double d = args.number("-d");
+  if (!(d > 0) || !std::isfinite(d)) throw Usage_error("-d must be a positive number");
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh P = read_mesh(args.positional[0], "MESH", args.flag("--quiet"));
+  std::ifstream in(args.values.at("--path"));
+  if (!in) throw Error("cannot read the path '" + args.values.at("--path") + "'");
+  std::vector<K::Point_3> path;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
+    std::istringstream ls(line);
+    double x, y, z;
+    std::string extra;
+    if (!(ls >> x >> y >> z) || (ls >> extra) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      throw Error("path '" + args.values.at("--path") + "' line " + std::to_string(n) + ": expected three numbers x y z");
+    path.emplace_back(x, y, z);
+  }
+  if (args.flag("--relative")) {
+    CGAL::Bbox_3 b = PMP::bbox(P), pb;
+    for (const auto& p : path) pb += p.bbox();
+    double s = 0;
+    for (int c = 0; c < 3; ++c) s += std::pow((b.max(c) - b.min(c)) + (pb.max(c) - pb.min(c)), 2);
+    d *= std::sqrt(s);
+  }
+  std::vector<K::Point_3> pts;
+  CGAL::Pmsum::Statistics stats;
+  const int threads = args.has("--threads") ? int(args.number("--threads")) : 0;
+#ifdef CGAL_LINKED_WITH_TBB
+  if (threads != 1) {
+    std::optional<tbb::global_control> limit;
+    if (threads > 1) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    CGAL::Pmsum::point_sweep<CGAL::Parallel_tag>(P, path, d, std::back_inserter(pts), &stats);
+  } else
+#endif
+    CGAL::Pmsum::point_sweep<CGAL::Sequential_tag>(P, path, d, std::back_inserter(pts), &stats);
+  std::vector<Oriented_point> out;
+  for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
+  write_points(out_path, out);
+  if (args.has("--json")) {
+    Json j;
+    j.str("command", "sweep").str("mesh", args.positional[0]).str("path", args.values.at("--path"))
+      .integer("path_points", path.size()).num("d", d).integer("candidates", stats.candidates)
+      .integer("cd_queries", stats.cd_queries).integer("output_points", pts.size()).num("seconds", seconds_since(start));
+    write_json(args.values.at("--json"), j);
+  }
+  if (!args.flag("--quiet")) std::cerr << "pmsum: " << pts.size() << " points written to " << out_path << "\n";
+  return 0;
+}
+
 int command_generate(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"-o"}, {"--help", "-h", "--list"});
@@ -254,6 +323,7 @@ int main(int argc, char** argv)
     if (command == "generate") return command_generate(argc, argv);
     if (command == "offset") return command_offset(argc, argv);
     if (command == "pd") return command_pd(argc, argv);
+    if (command == "sweep") return command_sweep(argc, argv);
     throw Usage_error("unknown command '" + command + "'");
   } catch (const Usage_error& e) {
     std::cerr << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")

@@ -108,6 +108,26 @@ EOF
 "$pmsum" sum "$work/two.off" "$tet" -d 0.2 -o "$work/two.xyz" --quiet && ok || ko "non-manifold blocks"
 "$pmsum" sum "$data/open_cube.off" "$data/ellipsoid.off" -d 0.05 --relative -o "$work/open.xyz" --quiet && ok || ko "open cube + ellipsoid"
 
+# --- other commands ----------------------------------------------------------------------
+"$pmsum" generate plates -o "$work/plates.off" && "$pmsum" generate cube-small -o "$work/small.off" && ok || ko "generate"
+"$pmsum" validate "$work/plates.off" "$work/small.off" -d 0.05 --relative --quiet --json "$work/v.json" > "$work/v.txt"
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/v.txt" && grep -q '"void_shells": 1' "$work/v.json" \
+   && grep -q '"exactness_failures": 0' "$work/v.json"; then ok; else ko "validate (difficult void)"; cat "$work/v.txt"; fi
+"$pmsum" offset "$cube" -r 0.1 -d 0.05 -o "$work/off.xyz" --json "$work/off.json" --quiet && grep -q '"ball_inradius"' "$work/off.json" && ok || ko "offset"
+# every offset point is within [inradius, r] of the unit cube
+inner=$(grep '"ball_inradius"' "$work/off.json" | tr -dc '0-9.e-')
+if awk -v lo="$inner" 'function d(x) { return x < 0 ? -x : (x > 1 ? x - 1 : 0) }
+      { e = sqrt(d($1)^2 + d($2)^2 + d($3)^2); if (e < lo - 1e-9 || e > 0.1 + 1e-9) bad = 1 } END { exit bad }' "$work/off.xyz"; then ok; else ko "offset distances"; fi
+"$pmsum" offset "$cube" -r 0.1 -d 0.05 --erode -o "$work/ero.xyz" --quiet && [ -s "$work/ero.xyz" ] && ok || ko "erosion"
+out=$("$pmsum" pd "$cube" "$cube" -d 0.05 --at 0.1 0 0 --at 3 3 3 --quiet)
+if echo "$out" | head -1 | grep -q "overlap 0.9" && echo "$out" | tail -1 | grep -q "free"; then ok; else ko "pd: $out"; fi
+printf '0 0 0\n1 0 0\n' > "$work/path.txt"
+"$pmsum" sweep "$cube" --path "$work/path.txt" -d 0.1 -o "$work/sweep.xyz" --quiet && ok || ko "sweep"
+if awk '{ if ($1 < 0 || $1 > 2 || $2 < 0 || $2 > 1 || $3 < 0 || $3 > 1) bad = 1 } END { exit bad }' "$work/sweep.xyz"; then ok; else ko "sweep bounds"; fi
+printf '0 0 0\nnot numbers\n' > "$work/badpath.txt"
+expect_fail 1 "expected three numbers" -- sweep "$cube" --path "$work/badpath.txt" -d 0.1 -o "$work/out.xyz"
+expect_fail 2 "three numbers" -- pd "$cube" "$cube" -d 0.1 --at 1 2
+
 # --- bad input --------------------------------------------------------------------------
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/truncated.off"
 printf 'this is not a mesh\n' > "$work/garbage.off"

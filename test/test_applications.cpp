@@ -198,3 +198,60 @@ TEST_CASE("penetration depth of convex pairs: within d of the exact depth", "[ap
     CHECK(inside > 10);
   }
 }
+
+#include <CGAL_pmsum/point_sweep.h>
+
+TEST_CASE("sweep of a cube along a segment is the exact convex box sweep", "[applications][sweep]")
+{
+  using EMesh = CGAL::Surface_mesh<EK::Point_3>;
+  const Soup cube = box({0, 0, 0}, {1, 1, 1});
+  const EMesh P = to_mesh<EMesh>(cube);
+  const std::vector<EK::Point_3> path = {EK::Point_3(0, 0, 0), EK::Point_3(2, 1, 0.5)};
+  const double d = 0.1;
+  std::vector<EK::Point_3> pts;
+  CGAL::Pmsum::point_sweep(P, path, d, std::back_inserter(pts));
+  REQUIRE(pts.size() > 500);
+  Soup seg;
+  seg.convex_pieces.push_back({{0, 0, 0}, {2, 1, 0.5}});
+  const Reference ref(cube, seg); // hull of the cube at both ends
+  std::size_t bad = 0;
+  for (const auto& x : pts) bad += !ref.on_boundary(x);
+  CHECK(bad == 0);
+  std::vector<IK::Point_3> dp;
+  for (const auto& x : pts) dp.emplace_back(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+  CHECK(coverage_distance(ref.boundary_samples(d / 8), dp) < d);
+}
+
+TEST_CASE("sweep along an L-shaped polyline", "[applications][sweep]")
+{
+  const Soup cube = box({0, 0, 0}, {0.5, 0.5, 0.5});
+  const Mesh P = to_mesh<Mesh>(cube);
+  const std::vector<IK::Point_3> path = {IK::Point_3(0, 0, 0), IK::Point_3(2, 0, 0), IK::Point_3(2, 2, 0)};
+  const double d = 0.1;
+  std::vector<IK::Point_3> pts;
+  CGAL::Pmsum::point_sweep(P, path, d, std::back_inserter(pts));
+  Soup legs;
+  legs.convex_pieces.push_back({{0, 0, 0}, {2, 0, 0}});
+  legs.convex_pieces.push_back({{2, 0, 0}, {2, 2, 0}});
+  const Reference ref(cube, legs); // union of two box sweeps
+  REQUIRE(!pts.empty());
+  // the swept volume is the union of [0,2.5]x[0,0.5]x[0,0.5] and [2,2.5]x[0,2.5]x[0,0.5]
+  for (const auto& p : pts) {
+    const bool in_a = p.x() >= 0 && p.x() <= 2.5 && p.y() >= 0 && p.y() <= 0.5;
+    const bool in_b = p.x() >= 2 && p.x() <= 2.5 && p.y() >= 0 && p.y() <= 2.5;
+    REQUIRE((in_a || in_b));
+    REQUIRE((p.z() >= 0 && p.z() <= 0.5));
+  }
+  CHECK(coverage_distance(ref.boundary_samples(d / 8), pts) < d);
+}
+
+TEST_CASE("sweep rejects a bad path", "[applications][sweep]")
+{
+  const Mesh P = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  std::vector<IK::Point_3> pts;
+  const std::vector<IK::Point_3> one = {IK::Point_3(0, 0, 0)};
+  const std::vector<IK::Point_3> repeated = {IK::Point_3(0, 0, 0), IK::Point_3(0, 0, 0), IK::Point_3(1, 0, 0)};
+  CHECK_THROWS_AS(CGAL::Pmsum::point_sweep(P, one, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
+  CHECK_THROWS_AS(CGAL::Pmsum::point_sweep(P, repeated, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
+  CHECK(pts.empty());
+}

@@ -10,7 +10,8 @@
 //   sampling.h       d-coverings of every vertex, edge and facet, with origins
 //   normal_filter.h  feature pairs whose sums can be on the boundary, and their directions
 //   cd_filter.h      exact collision test of (-P + x) against Q, symbolically perturbed
-//   and this file    enumerates the candidates of the kept pairs and writes the output
+//   pipeline.h       runs them: candidates of the kept pairs, CD filter, emit (in parallel)
+//   and this file    named parameters, the input stage, and the output records
 
 #ifndef CGAL_PMSUM_POINT_MINKOWSKI_SUM_H
 #define CGAL_PMSUM_POINT_MINKOWSKI_SUM_H
@@ -18,21 +19,13 @@
 #include <CGAL_pmsum/Minkowski_sum_boundary_point.h>
 #include <CGAL_pmsum/Statistics.h>
 #include <CGAL_pmsum/exceptions.h>
-#include <CGAL_pmsum/internal/cd_filter.h>
 #include <CGAL_pmsum/internal/mesh_data.h>
-#include <CGAL_pmsum/internal/normal_filter.h>
-#include <CGAL_pmsum/internal/sampling.h>
+#include <CGAL_pmsum/internal/pipeline.h>
 #include <CGAL_pmsum/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <chrono>
 #include <cmath>
@@ -71,10 +64,6 @@ Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptor
   f.denominator = s.denominator;
   return f;
 }
-
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t)
-{ return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 } // namespace internal
 } // namespace Pmsum
@@ -154,52 +143,7 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
   const in::Mesh_data mq = in::make_mesh_data(
     Q, vpm_q, false, choose_parameter(get_parameter(np_q, Pmsum::internal_np::treat_as_surface), false), "Q", desc_q);
 
-  // Stage 1: sampling resolutions (samples themselves are generated per pair).
-  const double radius = d / 2;
-  const in::Mesh_sampling sp(mp, radius, "P"), sq(mq, radius, "Q");
-  stats.samples_p = sp.number_of_samples();
-  stats.samples_q = sq.number_of_samples();
-  std::optional<in::Cd_geometry> geometry; // AABB trees
-  if (use_cd_filter) geometry.emplace(mp, mq);
-  stats.seconds_setup = in::seconds_since(start);
-
-  // Stage 2: normal filter.
-  start = in::Clock::now();
-  const in::Candidate_pairs pairs = in::candidate_feature_pairs(mp, mq, use_normal_filter);
-  std::vector<std::size_t> work(pairs.pairs.size());
-  std::size_t total = 0;
-  for (std::size_t i = 0; i < pairs.pairs.size(); ++i) {
-    work[i] = sp.number_of_samples(pairs.pairs[i].p) * sq.number_of_samples(pairs.pairs[i].q);
-    total += work[i];
-  }
-  stats.feature_pairs = pairs.pairs.size();
-  stats.candidates = total;
-  stats.seconds_normal_filter = in::seconds_since(start);
-  if (total > max_candidates) throw Pmsum::Too_many_candidates(total, max_candidates);
-
-  // Stage 3: candidates of each kept pair, CD filter, output. Feature pairs are processed
-  // in waves; within a wave, in parallel with CGAL::Parallel_tag. Each pair's kept samples
-  // are buffered, then emitted on this thread in the pairs' order: the output is the same
-  // for any number of threads, and kernel constructions (Epeck's lazy numbers are not
-  // thread-safe) and the callback stay on the calling thread.
-  start = in::Clock::now();
-  struct Kept { in::Sample p, q; std::uint32_t direction; }; // absolute index in pairs.directions
-  auto filter_pair = [&](std::size_t i, in::Cd_filter* filter, std::vector<Kept>& kept) {
-    const in::Feature_pair& fp = pairs.pairs[i];
-    std::vector<in::Sample> samples_p, samples_q;
-    sp.samples(fp.p, samples_p);
-    sq.samples(fp.q, samples_q);
-    const in::Direction* dirs = pairs.directions.data() + fp.first_direction;
-    for (const in::Sample& s_p : samples_p)
-      for (const in::Sample& s_q : samples_q) {
-        if (!filter) { kept.push_back({s_p, s_q, fp.first_direction}); continue; }
-        for (std::uint32_t k = 0; k < fp.number_of_directions; ++k)
-          if (filter->is_free(s_p, s_q, dirs, fp.number_of_directions, k)) {
-            kept.push_back({s_p, s_q, fp.first_direction + k});
-            break;
-          }
-      }
-  };
+  const in::Pipeline_options options{use_normal_filter, use_cd_filter, max_candidates, callback};
   auto coordinate = [&](const in::Mesh_data& M, const in::Sample& s, int c) {
     // FT arithmetic: exact with an exact kernel, rounded otherwise.
     FT v(0);
@@ -207,77 +151,22 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
       if (s.weights[i] != 0) v += FT(s.weights[i]) * FT(M.points[s.vertices[i]][c]);
     return v / FT(s.denominator);
   };
-  auto emit = [&](const Kept& k) {
-    ++stats.output_points;
-    const typename GT::Point_3 x(coordinate(mp, k.p, 0) + coordinate(mq, k.q, 0),
-                                 coordinate(mp, k.p, 1) + coordinate(mq, k.q, 1),
-                                 coordinate(mp, k.p, 2) + coordinate(mq, k.q, 2));
+  auto emit = [&](const in::Sample& sp, const in::Sample& sq, const in::Direction& direction) {
+    const typename GT::Point_3 x(coordinate(mp, sp, 0) + coordinate(mq, sq, 0),
+                                 coordinate(mp, sp, 1) + coordinate(mq, sq, 1),
+                                 coordinate(mp, sp, 2) + coordinate(mq, sq, 2));
     if constexpr (Pmsum::internal::Accepts_record<OutputIterator, Record>::value) {
-      const auto n = pairs.directions[k.direction].template vector<double>(mp, mq);
+      const auto n = direction.template vector<double>(mp, mq);
       const double len = std::sqrt(in::dot(n, n));
-      Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len), in::to_mesh_feature(k.p, desc_p),
-               in::to_mesh_feature(k.q, desc_q), negate_p};
+      Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len), in::to_mesh_feature(sp, desc_p),
+               in::to_mesh_feature(sq, desc_q), negate_p};
       *out++ = r;
     } else {
       *out++ = x;
     }
   };
 
-  constexpr bool parallel =
-#ifdef CGAL_LINKED_WITH_TBB
-    std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
-#else
-    false;
-#endif
-  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value || parallel,
-                "CGAL::Parallel_tag needs TBB (link with CGAL::TBB_support)");
-  Pmsum::Statistics cd_stats;
-  auto add_cd_stats = [&](const in::Cd_filter& f) {
-    cd_stats.cd_queries += f.statistics().queries;
-    cd_stats.triangle_pairs += f.statistics().triangle_pairs;
-    cd_stats.containment_tests += f.statistics().containment_tests;
-  };
-  // Waves of about 1/200 of the work (progress granularity), at least one pair each.
-  const std::size_t wave_work = (std::max<std::size_t>)(1, total / 200);
-  std::size_t done = 0;
-  std::vector<std::vector<Kept>> buffers;
-#ifdef CGAL_LINKED_WITH_TBB
-  std::unique_ptr<tbb::enumerable_thread_specific<in::Cd_filter>> filters;
-  if (parallel && geometry)
-    filters = std::make_unique<tbb::enumerable_thread_specific<in::Cd_filter>>(&*geometry);
-#endif
-  std::optional<in::Cd_filter> sequential_filter;
-  if (!parallel && geometry) sequential_filter.emplace(&*geometry);
-  for (std::size_t first = 0; first < pairs.pairs.size();) {
-    std::size_t last = first, wave = 0;
-    while (last < pairs.pairs.size() && (wave < wave_work || last == first)) wave += work[last++];
-    buffers.assign(last - first, {});
-    if constexpr (parallel) {
-#ifdef CGAL_LINKED_WITH_TBB
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& r) {
-        in::Cd_filter* f = filters ? &filters->local() : nullptr;
-        for (std::size_t i = r.begin(); i != r.end(); ++i) filter_pair(i, f, buffers[i - first]);
-      });
-#endif
-    } else {
-      for (std::size_t i = first; i < last; ++i)
-        filter_pair(i, sequential_filter ? &*sequential_filter : nullptr, buffers[i - first]);
-    }
-    for (const auto& b : buffers)
-      for (const Kept& k : b) emit(k);
-    done += wave;
-    first = last;
-    if (callback && !callback(total == 0 ? 1. : double(done) / double(total))) throw Pmsum::Operation_cancelled();
-  }
-  if (sequential_filter) add_cd_stats(*sequential_filter);
-#ifdef CGAL_LINKED_WITH_TBB
-  if (filters)
-    for (const in::Cd_filter& f : *filters) add_cd_stats(f);
-#endif
-  stats.cd_queries = cd_stats.cd_queries;
-  stats.triangle_pairs = cd_stats.triangle_pairs;
-  stats.containment_tests = cd_stats.containment_tests;
-  stats.seconds_cd_filter = in::seconds_since(start);
+  in::run_pipeline<ConcurrencyTag>(mp, mq, d, options, stats, emit, start);
   return out;
 }
 

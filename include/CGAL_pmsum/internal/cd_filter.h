@@ -89,8 +89,17 @@ struct Tree_mesh
         has_closed = true;
       }
     }
+    if (triangles.empty()) return; // a polyline: bare edges only
     tree.insert(triangles.cbegin(), triangles.cend());
     tree.build();
+  }
+
+  /// Bounding box of the segment of edge e, in this frame.
+  CGAL::Bbox_3 edge_box(Index e) const
+  {
+    const auto& a = base[mesh->edges[e].v[0]];
+    const auto& b = base[mesh->edges[e].v[1]];
+    return CGAL::Bbox_3(a[0], a[1], a[2], a[0], a[1], a[2]) + CGAL::Bbox_3(b[0], b[1], b[2], b[0], b[1], b[2]);
   }
 
 };
@@ -161,18 +170,46 @@ private:
   bool configuration_is_free()
   {
     ++m_stats.queries;
-    // 1. Does a triangle of the moving mesh cross a triangle of the static mesh?
+    // 1. Does a triangle (or bare edge) of the moving mesh cross a triangle of the static
+    //    mesh? (The static mesh has at least as many triangles; bare edges of the static
+    //    mesh are tested against the moving triangles by brute force.)
     const Mesh_data& M = *m_moving.mesh;
-    for (Index t = 0; t < M.number_of_triangles(); ++t) {
-      CGAL::Bbox_3 box = translated_box(m_moving.triangles[t].second.bbox());
-      if (!CGAL::do_overlap(box, m_static.tree.bbox())) continue;
-      bool hit = false;
-      Box_traversal traversal{box, [&](Index s) {
-                                ++m_stats.triangle_pairs;
-                                return hit = triangles_cross(t, s);
-                              }};
-      m_static.tree.traversal(box, traversal);
-      if (hit) return false;
+    if (m_static.mesh->number_of_triangles() > 0) {
+      for (Index t = 0; t < M.number_of_triangles(); ++t) {
+        CGAL::Bbox_3 box = translated_box(m_moving.triangles[t].second.bbox());
+        if (!CGAL::do_overlap(box, m_static.tree.bbox())) continue;
+        bool hit = false;
+        Box_traversal traversal{box, [&](Index s) {
+                                  ++m_stats.triangle_pairs;
+                                  return hit = triangles_cross(t, s);
+                                }};
+        m_static.tree.traversal(box, traversal);
+        if (hit) return false;
+      }
+      for (Index e : M.bare_edges) {
+        CGAL::Bbox_3 box = translated_box(m_moving.edge_box(e));
+        if (!CGAL::do_overlap(box, m_static.tree.bbox())) continue;
+        bool hit = false;
+        const auto& ev = M.edges[e].v;
+        const std::array<Moving_point, 2> seg = {Moving_point{&m_moving.base[ev[0]], 1}, Moving_point{&m_moving.base[ev[1]], 1}};
+        Box_traversal traversal{box, [&](Index s) {
+                                  ++m_stats.triangle_pairs;
+                                  return hit = segment_crosses(seg, static_triangle(s));
+                                }};
+        m_static.tree.traversal(box, traversal);
+        if (hit) return false;
+      }
+    }
+    for (Index e : m_static.mesh->bare_edges) {
+      const auto& ev = m_static.mesh->edges[e].v;
+      const std::array<Moving_point, 2> seg = {Moving_point{&m_static.base[ev[0]], 0}, Moving_point{&m_static.base[ev[1]], 0}};
+      for (Index t = 0; t < M.number_of_triangles(); ++t) {
+        const auto& tm = M.triangles[t];
+        ++m_stats.triangle_pairs;
+        if (segment_crosses(seg, {Moving_point{&m_moving.base[tm[0]], 1}, Moving_point{&m_moving.base[tm[1]], 1},
+                                  Moving_point{&m_moving.base[tm[2]], 1}}))
+          return false;
+      }
     }
     // 2. Is a component of one mesh inside a closed component of the other?
     for (const auto& c : M.components) {
@@ -318,6 +355,21 @@ private:
     for (int i = 0; i < 3; ++i) sb[i] = orientation(A[0], A[1], A[2], B[i]);
     if (sb[0] == sb[1] && sb[1] == sb[2]) return false;
     return edge_crosses(A, sa, B) || edge_crosses(B, sb, A);
+  }
+
+  std::array<Moving_point, 3> static_triangle(Index s) const
+  {
+    const auto& ts = m_static.mesh->triangles[s];
+    return {Moving_point{&m_static.base[ts[0]], 0}, Moving_point{&m_static.base[ts[1]], 0},
+            Moving_point{&m_static.base[ts[2]], 0}};
+  }
+
+  /// Does the segment (u, v) cross the interior of triangle T (one moving, one static)?
+  bool segment_crosses(const std::array<Moving_point, 2>& seg, const std::array<Moving_point, 3>& T)
+  {
+    if (orientation(T[0], T[1], T[2], seg[0]) == orientation(T[0], T[1], T[2], seg[1])) return false;
+    const CGAL::Sign o1 = orientation(seg[0], seg[1], T[0], T[1]);
+    return o1 == orientation(seg[0], seg[1], T[1], T[2]) && o1 == orientation(seg[0], seg[1], T[2], T[0]);
   }
 
   /// Does an edge of triangle E, whose vertices lie on sides `side` of the plane of T,

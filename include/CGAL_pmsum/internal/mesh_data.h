@@ -62,6 +62,7 @@ struct Mesh_data
   std::vector<Index> vertex_triangle_offsets, vertex_triangles; // CSR: triangles around a vertex
   std::vector<Index> vertex_component, triangle_component;
   std::vector<Component> components;
+  std::vector<Index> bare_edges; // edges without any triangle (polylines: sweep paths)
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_edges() const { return edges.size(); }
@@ -106,6 +107,55 @@ struct Mesh_descriptors
   std::vector<typename GT::halfedge_descriptor> edges; // halfedge from v[0] to v[1]
   std::vector<typename GT::face_descriptor> faces;
 };
+
+/// Vertex stars, connected components and their closedness, bare edges.
+inline void build_stars_and_components(Mesh_data& m, bool as_surface)
+{
+  // Vertex stars (CSR).
+  const std::size_t nv = m.points.size();
+  auto build_csr = [nv](auto&& for_each_pair, std::vector<Index>& offsets, std::vector<Index>& list) {
+    offsets.assign(nv + 1, 0);
+    for_each_pair([&](Index v, Index) { ++offsets[v + 1]; });
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+    list.resize(offsets.back());
+    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+    for_each_pair([&](Index v, Index x) { list[fill[v]++] = x; });
+  };
+  build_csr([&](auto&& f) { for (Index e = 0; e < m.edges.size(); ++e) { f(m.edges[e].v[0], e); f(m.edges[e].v[1], e); } },
+            m.vertex_edge_offsets, m.vertex_edges);
+  build_csr([&](auto&& f) { for (Index t = 0; t < m.triangles.size(); ++t) for (Index v : m.triangles[t]) f(v, t); },
+            m.vertex_triangle_offsets, m.vertex_triangles);
+
+  // Connected components (through edges) and whether they are closed.
+  std::vector<Index> parent(nv);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](Index v) { while (parent[v] != v) v = parent[v] = parent[parent[v]]; return v; };
+  for (const auto& e : m.edges) parent[find(e.v[0])] = find(e.v[1]);
+  m.vertex_component.assign(nv, no_index);
+  for (Index v = 0; v < nv; ++v) {
+    if (m.vertex_edge_offsets[v] == m.vertex_edge_offsets[v + 1]) continue; // isolated vertex
+    const Index r = find(v);
+    if (m.vertex_component[r] == no_index) {
+      m.vertex_component[r] = static_cast<Index>(m.components.size());
+      Mesh_data::Component c;
+      c.representative_vertex = r;
+      c.min = c.max = m.points[r];
+      m.components.push_back(c);
+    }
+    m.vertex_component[v] = m.vertex_component[r];
+    Mesh_data::Component& c = m.components[m.vertex_component[v]];
+    for (int i = 0; i < 3; ++i) {
+      c.min[i] = (std::min)(c.min[i], m.points[v][i]);
+      c.max[i] = (std::max)(c.max[i], m.points[v][i]);
+    }
+  }
+  for (const auto& e : m.edges)
+    if (e.f[1] == no_index || as_surface) m.components[m.vertex_component[e.v[0]]].closed = false;
+  for (const auto& t : m.triangles) m.triangle_component.push_back(m.vertex_component[t[0]]);
+
+  for (Index e = 0; e < m.edges.size(); ++e)
+    if (m.edges[e].f[0] == no_index) m.bare_edges.push_back(e);
+}
 
 /// Exact double value of a kernel coordinate, or an Invalid_input error.
 template <class FT>
@@ -204,47 +254,7 @@ Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
     }
   }
 
-  // Vertex stars (CSR).
-  const std::size_t nv = m.points.size();
-  auto build_csr = [nv](auto&& for_each_pair, std::vector<Index>& offsets, std::vector<Index>& list) {
-    offsets.assign(nv + 1, 0);
-    for_each_pair([&](Index v, Index) { ++offsets[v + 1]; });
-    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    list.resize(offsets.back());
-    std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-    for_each_pair([&](Index v, Index x) { list[fill[v]++] = x; });
-  };
-  build_csr([&](auto&& f) { for (Index e = 0; e < m.edges.size(); ++e) { f(m.edges[e].v[0], e); f(m.edges[e].v[1], e); } },
-            m.vertex_edge_offsets, m.vertex_edges);
-  build_csr([&](auto&& f) { for (Index t = 0; t < m.triangles.size(); ++t) for (Index v : m.triangles[t]) f(v, t); },
-            m.vertex_triangle_offsets, m.vertex_triangles);
-
-  // Connected components (through edges) and whether they are closed.
-  std::vector<Index> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](Index v) { while (parent[v] != v) v = parent[v] = parent[parent[v]]; return v; };
-  for (const auto& e : m.edges) parent[find(e.v[0])] = find(e.v[1]);
-  m.vertex_component.assign(nv, no_index);
-  for (Index v = 0; v < nv; ++v) {
-    if (m.vertex_edge_offsets[v] == m.vertex_edge_offsets[v + 1]) continue; // isolated vertex
-    const Index r = find(v);
-    if (m.vertex_component[r] == no_index) {
-      m.vertex_component[r] = static_cast<Index>(m.components.size());
-      Mesh_data::Component c;
-      c.representative_vertex = r;
-      c.min = c.max = m.points[r];
-      m.components.push_back(c);
-    }
-    m.vertex_component[v] = m.vertex_component[r];
-    Mesh_data::Component& c = m.components[m.vertex_component[v]];
-    for (int i = 0; i < 3; ++i) {
-      c.min[i] = (std::min)(c.min[i], m.points[v][i]);
-      c.max[i] = (std::max)(c.max[i], m.points[v][i]);
-    }
-  }
-  for (const auto& e : m.edges)
-    if (e.f[1] == no_index || as_surface) m.components[m.vertex_component[e.v[0]]].closed = false;
-  for (const auto& t : m.triangles) m.triangle_component.push_back(m.vertex_component[t[0]]);
+  build_stars_and_components(m, as_surface);
 
   // Closed components must bound their volume with outward normals (CGAL's convention):
   // the sign of 6 x their total volume, sum of a . ((b - a) x (c - a)), decided exactly.
@@ -273,6 +283,25 @@ Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
                             m.triangle_normal<NT>(t0));
                }) != CGAL::POSITIVE;
   }
+  return m;
+}
+
+/// A polyline as a mesh without triangles (a sweep path): vertices and edges only.
+template <class PointRange>
+Mesh_data make_polyline_data(const PointRange& path, const std::string& name)
+{
+  Mesh_data m;
+  for (const auto& p : path) {
+    const std::string where = name + " point " + std::to_string(m.points.size());
+    m.points.push_back({exact_double(p.x(), where), exact_double(p.y(), where), exact_double(p.z(), where)});
+  }
+  if (m.points.size() < 2) throw Invalid_input(name + " needs at least two points");
+  for (Index i = 0; i + 1 < m.points.size(); ++i) {
+    if (m.points[i] == m.points[i + 1])
+      throw Invalid_input(name + " has two equal consecutive points (" + std::to_string(i) + ")");
+    m.edges.push_back({{i, i + 1}, {no_index, no_index}, true});
+  }
+  build_stars_and_components(m, true);
   return m;
 }
 

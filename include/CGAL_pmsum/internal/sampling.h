@@ -142,7 +142,7 @@ private:
   void for_each_edge_parameter(Index e, const F& f) const
   {
     const auto& edge = m_mesh->edges[e];
-    std::int32_t dens[3] = {m_edge_n[e], m_triangle_n[edge.f[0]],
+    std::int32_t dens[3] = {m_edge_n[e], edge.f[0] == no_index ? 1 : m_triangle_n[edge.f[0]],
                             edge.f[1] == no_index ? 1 : m_triangle_n[edge.f[1]]};
     for (int i = 0; i < 3; ++i) {
       const std::int32_t den = dens[i];
