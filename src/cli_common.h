@@ -378,6 +378,22 @@ inline Sum_input read_sum_input(const Arguments& args)
   return in;
 }
 
+/// Calls f(CGAL::Parallel_tag()) on `threads` threads (0: all cores), or
+/// f(CGAL::Sequential_tag()) for one thread or without TBB.
+template <class F>
+void with_threads(int threads, F&& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if (threads != 1) {
+    std::optional<tbb::global_control> limit;
+    if (threads > 1) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    f(CGAL::Parallel_tag());
+    return;
+  }
+#endif
+  f(CGAL::Sequential_tag());
+}
+
 /// Runs point_minkowski_sum with a progress bar; refuses (exit code 3) a run whose output
 /// would not fit in memory, unless --force.
 inline std::vector<Record> compute_sum(const Sum_input& in, CGAL::Pmsum::Statistics& stats)
@@ -394,14 +410,9 @@ inline std::vector<Record> compute_sum(const Sum_input& in, CGAL::Pmsum::Statist
                     .maximum_number_of_candidates(limit)
                     .callback(callback);
   try {
-#ifdef CGAL_LINKED_WITH_TBB
-    if (in.threads != 1) {
-      std::optional<tbb::global_control> limit_threads;
-      if (in.threads > 1) limit_threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(in.threads));
-      CGAL::point_minkowski_sum<CGAL::Parallel_tag>(in.P, in.Q, in.d, std::back_inserter(records), np);
-    } else
-#endif
-      CGAL::point_minkowski_sum<CGAL::Sequential_tag>(in.P, in.Q, in.d, std::back_inserter(records), np);
+    with_threads(in.threads, [&](auto tag) {
+      CGAL::point_minkowski_sum<decltype(tag)>(in.P, in.Q, in.d, std::back_inserter(records), np);
+    });
   } catch (const CGAL::Pmsum::Too_many_candidates& e) {
     std::ostringstream msg;
     msg << "refused: d = " << in.d << " leaves " << e.candidates << " candidate points (up to "

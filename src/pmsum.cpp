@@ -265,14 +265,9 @@ int command_sweep(int argc, char** argv)
   std::vector<K::Point_3> pts;
   CGAL::Pmsum::Statistics stats;
   const int threads = args.has("--threads") ? int(args.number("--threads")) : 0;
-#ifdef CGAL_LINKED_WITH_TBB
-  if (threads != 1) {
-    std::optional<tbb::global_control> limit;
-    if (threads > 1) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    CGAL::Pmsum::point_sweep<CGAL::Parallel_tag>(P, path, d, std::back_inserter(pts), &stats);
-  } else
-#endif
-    CGAL::Pmsum::point_sweep<CGAL::Sequential_tag>(P, path, d, std::back_inserter(pts), &stats);
+  with_threads(threads, [&](auto tag) {
+    CGAL::Pmsum::point_sweep<decltype(tag)>(P, path, d, std::back_inserter(pts), &stats);
+  });
   std::vector<Oriented_point> out;
   for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
   write_points(out_path, out);

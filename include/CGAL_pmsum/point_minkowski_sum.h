@@ -144,17 +144,10 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
     Q, vpm_q, false, choose_parameter(get_parameter(np_q, Pmsum::internal_np::treat_as_surface), false), "Q", desc_q);
 
   const in::Pipeline_options options{use_normal_filter, use_cd_filter, max_candidates, callback};
-  auto coordinate = [&](const in::Mesh_data& M, const in::Sample& s, int c) {
-    // FT arithmetic: exact with an exact kernel, rounded otherwise.
-    FT v(0);
-    for (int i = 0; i < 3; ++i)
-      if (s.weights[i] != 0) v += FT(s.weights[i]) * FT(M.points[s.vertices[i]][c]);
-    return v / FT(s.denominator);
-  };
   auto emit = [&](const in::Sample& sp, const in::Sample& sq, const in::Direction& direction) {
-    const typename GT::Point_3 x(coordinate(mp, sp, 0) + coordinate(mq, sq, 0),
-                                 coordinate(mp, sp, 1) + coordinate(mq, sq, 1),
-                                 coordinate(mp, sp, 2) + coordinate(mq, sq, 2));
+    const typename GT::Point_3 x(in::sample_coordinate<FT>(mp, sp, 0) + in::sample_coordinate<FT>(mq, sq, 0),
+                                 in::sample_coordinate<FT>(mp, sp, 1) + in::sample_coordinate<FT>(mq, sq, 1),
+                                 in::sample_coordinate<FT>(mp, sp, 2) + in::sample_coordinate<FT>(mq, sq, 2));
     if constexpr (Pmsum::internal::Accepts_record<OutputIterator, Record>::value) {
       const auto n = direction.template vector<double>(mp, mq);
       const double len = std::sqrt(in::dot(n, n));

@@ -36,17 +36,11 @@ OutputIterator point_sweep(const PolygonMesh& P, const PointRange& path, double 
   Statistics local;
   Statistics& stats = statistics ? *statistics : local;
   stats = Statistics();
-  auto coordinate = [&](const in::Mesh_data& M, const in::Sample& s, int c) {
-    FT v(0);
-    for (int i = 0; i < 3; ++i)
-      if (s.weights[i] != 0) v += FT(s.weights[i]) * FT(M.points[s.vertices[i]][c]);
-    return v / FT(s.denominator);
-  };
   in::run_pipeline<ConcurrencyTag>(mp, mq, d, in::Pipeline_options{}, stats,
                                    [&](const in::Sample& sp, const in::Sample& sq, const in::Direction&) {
-                                     *out++ = Point(coordinate(mp, sp, 0) + coordinate(mq, sq, 0),
-                                                    coordinate(mp, sp, 1) + coordinate(mq, sq, 1),
-                                                    coordinate(mp, sp, 2) + coordinate(mq, sq, 2));
+                                     *out++ = Point(in::sample_coordinate<FT>(mp, sp, 0) + in::sample_coordinate<FT>(mq, sq, 0),
+                                                    in::sample_coordinate<FT>(mp, sp, 1) + in::sample_coordinate<FT>(mq, sq, 1),
+                                                    in::sample_coordinate<FT>(mp, sp, 2) + in::sample_coordinate<FT>(mq, sq, 2));
                                    },
                                    start);
   return out;

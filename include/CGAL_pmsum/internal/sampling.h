@@ -52,6 +52,17 @@ struct Sample
   std::int32_t denominator;
 };
 
+/// Coordinate c of sample s in the number type FT of an output kernel: exact with an exact
+/// kernel (the sample is exactly on its feature), rounded otherwise.
+template <class FT>
+FT sample_coordinate(const Mesh_data& M, const Sample& s, int c)
+{
+  FT v(0);
+  for (int i = 0; i < 3; ++i)
+    if (s.weights[i] != 0) v += FT(s.weights[i]) * FT(M.points[s.vertices[i]][c]);
+  return v / FT(s.denominator);
+}
+
 /// f(T) of the header comment, computed from the edge lengths.
 inline double triangle_covering_radius(const std::array<double, 3>& a, const std::array<double, 3>& b,
                                        const std::array<double, 3>& c)
