@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Speed benchmarks of CGAL_pmsum, side by side in one run (issue 4).
 
-    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters multiresolution threads peers]
+    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters multiresolution threads peers pd]
 
 Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
   filters          time and CD queries: CD only, CD + normal (CD + normal + octree: not built yet)
@@ -9,6 +9,7 @@ Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
   threads          1 and 2 threads (and more where the machine has them): seconds and speedup
   peers            CGAL Nef minkowski_sum_3 (where it finishes in 10 minutes) and Manifold's
                    minkowskiSum (npm manifold-3d, installed here with npm), as ratios
+  pd               penetration-depth queries per second (benchmark/pd_queries.cpp)
 Needs Debian's python3-matplotlib; the peers need node and npm.
 """
 import argparse
@@ -209,10 +210,26 @@ def bench_peers(run):
           "Goals of issue 4: Nef / ours >= 1000, Manifold / ours >= 50, CD queries / points <= 2.")
 
 
+def bench_pd(run):
+    """Penetration-depth queries on a contact space of about a million points (issue 5)."""
+    exe = os.path.join(os.path.dirname(run.pmsum), "pd_queries")
+    out = subprocess.run([exe, "--benchmark_format=json", "--benchmark_min_time=0.5"], capture_output=True,
+                         text=True, check=True)
+    rep = json.loads(out.stdout)
+    rows = []
+    for b in rep["benchmarks"]:
+        rows.append([b["name"], f"{b.get('contact_points', 0):,.0f}", f"{b['real_time'] / 1000:.2f}",
+                     f"{1e9 / b['real_time']:,.0f}", fmt(b.get("build_seconds"))])
+    write("pd", ["benchmark", "contact points", "µs per query", "queries per second", "build s"], rows,
+          "knot1 (moving) against the octahedron x 1/16, contact space at d = 0.27% of the diagonal, built with "
+          f"{os.cpu_count()} threads; queries near the contact space. Paper: 0.1 ms per query; goal: <= 2 µs. "
+          "FCL comparison: not built yet.")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--only", nargs="*", default=["filters", "multiresolution", "threads", "peers"])
+    ap.add_argument("--only", nargs="*", default=["filters", "multiresolution", "threads", "peers", "pd"])
     args = ap.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     run = Runner(args.build)

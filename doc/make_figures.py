@@ -41,7 +41,7 @@ def draw(ax, pts, title, max_points=60000, elev=25, azim=35, size=0.3):
                s=size, linewidths=0, vmin=0, vmax=1)
     ax.set_title(title, fontsize=9)
     ax.view_init(elev=elev, azim=azim)
-    ax.set_box_aspect((1, 1, 1))
+    ax.set_box_aspect(tuple(max(1e-9, max(p[c] for p in sel) - min(p[c] for p in sel)) for c in range(3)))
     ax.set_axis_off()
 
 

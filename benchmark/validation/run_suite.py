@@ -94,7 +94,7 @@ def picture(xyz, png, title):
     ax.scatter([p[0] for p in pts], [p[1] for p in pts], [p[2] for p in pts], c=colours, cmap="tab10",
                vmin=0, vmax=9, s=0.2, linewidths=0)
     ax.set_title(title, fontsize=9)
-    ax.set_box_aspect((1, 1, 1))
+    ax.set_box_aspect(tuple(max(1e-9, max(p[c] for p in pts) - min(p[c] for p in pts)) for c in range(3)))
     ax.view_init(elev=25, azim=35)
     ax.set_axis_off()
     fig.tight_layout()
