@@ -53,22 +53,18 @@ template <class ConcurrencyTag, class Emit>
 void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipeline_options& o,
                   Statistics& stats, Emit&& emit, Clock::time_point start)
 {
-  namespace in = internal;
-  const bool use_normal_filter = o.use_normal_filter, use_cd_filter = o.use_cd_filter;
-  const std::size_t max_candidates = o.max_candidates;
-  const std::function<bool(double)>& callback = o.callback;
   // Stage 1: sampling resolutions (samples themselves are generated per pair).
   const double radius = d / 2;
-  const in::Mesh_sampling sp(mp, radius, "P"), sq(mq, radius, "Q");
+  const Mesh_sampling sp(mp, radius, "P"), sq(mq, radius, "Q");
   stats.samples_p = sp.number_of_samples();
   stats.samples_q = sq.number_of_samples();
-  std::optional<in::Cd_geometry> geometry; // AABB trees
-  if (use_cd_filter) geometry.emplace(mp, mq);
-  stats.seconds_setup = in::seconds_since(start);
+  std::optional<Cd_geometry> geometry; // AABB trees
+  if (o.use_cd_filter) geometry.emplace(mp, mq);
+  stats.seconds_setup = seconds_since(start);
 
   // Stage 2: normal filter.
-  start = in::Clock::now();
-  const in::Candidate_pairs pairs = in::candidate_feature_pairs(mp, mq, use_normal_filter);
+  start = Clock::now();
+  const Candidate_pairs pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter);
   std::vector<std::size_t> work(pairs.pairs.size());
   std::size_t total = 0;
   for (std::size_t i = 0; i < pairs.pairs.size(); ++i) {
@@ -77,24 +73,24 @@ void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipe
   }
   stats.feature_pairs = pairs.pairs.size();
   stats.candidates = total;
-  stats.seconds_normal_filter = in::seconds_since(start);
-  if (total > max_candidates) throw Too_many_candidates(total, max_candidates);
+  stats.seconds_normal_filter = seconds_since(start);
+  if (total > o.max_candidates) throw Too_many_candidates(total, o.max_candidates);
 
   // Stage 3: candidates of each kept pair, CD filter, output. Feature pairs are processed
   // in waves; within a wave, in parallel with CGAL::Parallel_tag. Each pair's kept samples
   // are buffered, then emitted on this thread in the pairs' order: the output is the same
   // for any number of threads, and kernel constructions (Epeck's lazy numbers are not
   // thread-safe) and the callback stay on the calling thread.
-  start = in::Clock::now();
-  struct Kept { in::Sample p, q; std::uint32_t direction; }; // absolute index in pairs.directions
-  auto filter_pair = [&](std::size_t i, in::Cd_filter* filter, std::vector<Kept>& kept) {
-    const in::Feature_pair& fp = pairs.pairs[i];
-    std::vector<in::Sample> samples_p, samples_q;
+  start = Clock::now();
+  struct Kept { Sample p, q; std::uint32_t direction; }; // absolute index in pairs.directions
+  auto filter_pair = [&](std::size_t i, Cd_filter* filter, std::vector<Kept>& kept) {
+    const Feature_pair& fp = pairs.pairs[i];
+    std::vector<Sample> samples_p, samples_q;
     sp.samples(fp.p, samples_p);
     sq.samples(fp.q, samples_q);
-    const in::Direction* dirs = pairs.directions.data() + fp.first_direction;
-    for (const in::Sample& s_p : samples_p)
-      for (const in::Sample& s_q : samples_q) {
+    const Direction* dirs = pairs.directions.data() + fp.first_direction;
+    for (const Sample& s_p : samples_p)
+      for (const Sample& s_q : samples_q) {
         if (!filter) { kept.push_back({s_p, s_q, fp.first_direction}); continue; }
         for (std::uint32_t k = 0; k < fp.number_of_directions; ++k)
           if (filter->is_free(s_p, s_q, dirs, fp.number_of_directions, k)) {
@@ -112,7 +108,7 @@ void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipe
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value || parallel,
                 "CGAL::Parallel_tag needs TBB (link with CGAL::TBB_support)");
   Statistics cd_stats;
-  auto add_cd_stats = [&](const in::Cd_filter& f) {
+  auto add_cd_stats = [&](const Cd_filter& f) {
     cd_stats.cd_queries += f.statistics().queries;
     cd_stats.triangle_pairs += f.statistics().triangle_pairs;
     cd_stats.containment_tests += f.statistics().containment_tests;
@@ -122,11 +118,11 @@ void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipe
   std::size_t done = 0;
   std::vector<std::vector<Kept>> buffers;
 #ifdef CGAL_LINKED_WITH_TBB
-  std::unique_ptr<tbb::enumerable_thread_specific<in::Cd_filter>> filters;
+  std::unique_ptr<tbb::enumerable_thread_specific<Cd_filter>> filters;
   if (parallel && geometry)
-    filters = std::make_unique<tbb::enumerable_thread_specific<in::Cd_filter>>(&*geometry);
+    filters = std::make_unique<tbb::enumerable_thread_specific<Cd_filter>>(&*geometry);
 #endif
-  std::optional<in::Cd_filter> sequential_filter;
+  std::optional<Cd_filter> sequential_filter;
   if (!parallel && geometry) sequential_filter.emplace(&*geometry);
   for (std::size_t first = 0; first < pairs.pairs.size();) {
     std::size_t last = first, wave = 0;
@@ -135,7 +131,7 @@ void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipe
     if constexpr (parallel) {
 #ifdef CGAL_LINKED_WITH_TBB
       tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& r) {
-        in::Cd_filter* f = filters ? &filters->local() : nullptr;
+        Cd_filter* f = filters ? &filters->local() : nullptr;
         for (std::size_t i = r.begin(); i != r.end(); ++i) filter_pair(i, f, buffers[i - first]);
       });
 #endif
@@ -150,17 +146,17 @@ void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipe
       }
     done += wave;
     first = last;
-    if (callback && !callback(total == 0 ? 1. : double(done) / double(total))) throw Operation_cancelled();
+    if (o.callback && !o.callback(total == 0 ? 1. : double(done) / double(total))) throw Operation_cancelled();
   }
   if (sequential_filter) add_cd_stats(*sequential_filter);
 #ifdef CGAL_LINKED_WITH_TBB
   if (filters)
-    for (const in::Cd_filter& f : *filters) add_cd_stats(f);
+    for (const Cd_filter& f : *filters) add_cd_stats(f);
 #endif
   stats.cd_queries = cd_stats.cd_queries;
   stats.triangle_pairs = cd_stats.triangle_pairs;
   stats.containment_tests = cd_stats.containment_tests;
-  stats.seconds_cd_filter = in::seconds_since(start);
+  stats.seconds_cd_filter = seconds_since(start);
 }
 
 } // namespace internal
