@@ -3,6 +3,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <set>
+#include <tuple>
+
 using namespace pmsum_test;
 
 namespace {
@@ -149,4 +152,77 @@ TEST_CASE("edges parallel to the containment ray", "[nonconvex][robustness]")
   const Reference ref(P, Q, true);
   REQUIRE(!r.points.empty());
   CHECK(exactness_failures(r, ref) == 0);
+}
+
+namespace {
+/// The normal filter's kept pairs by brute force over all feature pairs (the oracle for the
+/// direction grid, which must keep exactly the same pairs and directions).
+std::set<std::tuple<int, unsigned, int, unsigned, int, int, unsigned, unsigned>>
+brute_force_pairs(const CGAL::Pmsum::internal::Mesh_data& P, const CGAL::Pmsum::internal::Mesh_data& Q)
+{
+  using namespace CGAL::Pmsum::internal;
+  std::set<std::tuple<int, unsigned, int, unsigned, int, int, unsigned, unsigned>> out;
+  auto keep = [&](Feature fp, Feature fq, const Direction& d) {
+    for (Feature a : closure(P, fp))
+      for (Feature b : closure(Q, fq))
+        out.insert({a.dimension, a.index, b.dimension, b.index, int(d.kind), int(d.sign), d.a, d.b});
+  };
+  std::vector<Direction> dirs;
+  for (Index t = 0; t < P.number_of_triangles(); ++t) {
+    dirs.clear();
+    facet_directions(P, Direction::FACET_OF_P, t, dirs);
+    for (Index v = 0; v < Q.number_of_vertices(); ++v)
+      for (const Direction& d : dirs)
+        if (!Q.vertex_is_isolated(v) && vertex_is_extreme(Q, v, d, P, Q)) keep({2, t}, {0, v}, d);
+  }
+  for (Index t = 0; t < Q.number_of_triangles(); ++t) {
+    dirs.clear();
+    facet_directions(Q, Direction::FACET_OF_Q, t, dirs);
+    for (Index v = 0; v < P.number_of_vertices(); ++v)
+      for (const Direction& d : dirs)
+        if (!P.vertex_is_isolated(v) && vertex_is_extreme(P, v, d, P, Q)) keep({0, v}, {2, t}, d);
+  }
+  for (Index a = 0; a < P.number_of_edges(); ++a)
+    for (Index b = 0; b < Q.number_of_edges(); ++b) {
+      const Direction plus{Direction::EDGES, 1, a, b};
+      bool parallel = true;
+      for (int c = 0; c < 3 && parallel; ++c)
+        parallel = filtered_sign([&](auto nt) { return plus.vector<decltype(nt)>(P, Q)[c]; }) == CGAL::ZERO;
+      if (parallel) continue;
+      for (std::int8_t s : {1, -1}) {
+        const Direction d{Direction::EDGES, s, a, b};
+        if (edge_is_extreme(P, a, d, P, Q) && edge_is_extreme(Q, b, d, P, Q)) keep({1, a}, {1, b}, d);
+      }
+    }
+  return out;
+}
+} // namespace
+
+TEST_CASE("the direction grid keeps exactly the brute-force pairs", "[filters][grid]")
+{
+  using namespace CGAL::Pmsum::internal;
+  const std::vector<std::pair<Soup, Soup>> cases = {
+    {l_shape(), tetrahedron(0.6)},
+    {random_convex(30, 3), random_convex(25, 4)},
+    {blocks(3, 0.5), box({0, 0, 0}, {1, 1, 1})},
+    {open_box({0, 0, 0}, {1, 1, 1}), ellipsoid(0.2, 0.15, 0.1)},
+    {ellipsoid(1, 0.7, 0.4, 24, 12), transformed(random_convex(40, 9), 0.3)},
+  };
+  for (bool negate : {false, true})
+    for (const auto& [ps, qs] : cases) {
+      const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
+      Mesh_descriptors<Mesh> dp, dq;
+      const Mesh_data P = make_mesh_data(pm, get(CGAL::vertex_point, pm), negate, false, "P", dp);
+      const Mesh_data Q = make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq);
+      const Candidate_pairs grid = candidate_feature_pairs(P, Q, true);
+      std::set<std::tuple<int, unsigned, int, unsigned, int, int, unsigned, unsigned>> got;
+      for (const Feature_pair& fp : grid.pairs)
+        for (std::uint32_t k = 0; k < fp.number_of_directions; ++k) {
+          const Direction& d = grid.directions[fp.first_direction + k];
+          got.insert({fp.p.dimension, fp.p.index, fp.q.dimension, fp.q.index, int(d.kind), int(d.sign), d.a, d.b});
+        }
+      const auto expected = brute_force_pairs(P, Q);
+      REQUIRE(expected.size() > 10);
+      CHECK(got == expected);
+    }
 }

@@ -23,6 +23,7 @@
 #ifndef CGAL_PMSUM_INTERNAL_NORMAL_FILTER_H
 #define CGAL_PMSUM_INTERNAL_NORMAL_FILTER_H
 
+#include <CGAL_pmsum/internal/direction_grid.h>
 #include <CGAL_pmsum/internal/sampling.h>
 
 #include <algorithm>
@@ -177,40 +178,96 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
       }
   };
 
+  // The direction grid limits the exact tests to pairs that may be extreme in a common
+  // cell of directions (see direction_grid.h); the kept pairs are the same as with all pairs.
+  const Direction_grid grid;
+  using V = Direction_grid::V;
+  auto diff = [](const Mesh_data& M, Index a, Index b) { return M.points[b] - M.points[a]; };
+  // cells where vertex v may be extreme: no incident edge is up for every direction of the cell
+  auto vertex_cells = [&](const Mesh_data& M) {
+    std::vector<std::vector<Index>> by_cell(grid.size());
+    for (Index v = 0; v < M.number_of_vertices(); ++v) {
+      if (M.vertex_is_isolated(v)) continue;
+      for (int c = 0; c < grid.size(); ++c) {
+        bool possible = true;
+        for (Index i = M.vertex_edge_offsets[v]; i < M.vertex_edge_offsets[v + 1] && possible; ++i) {
+          const auto& e = M.edges[M.vertex_edges[i]];
+          possible = !grid.strictly_positive(c, diff(M, v, e.v[0] == v ? e.v[1] : e.v[0]));
+        }
+        if (possible) by_cell[c].push_back(v);
+      }
+    }
+    return by_cell;
+  };
+  // cells where edge e may be extreme: they meet the circle orthogonal to e, and no far
+  // vertex is up for every direction of the cell
+  auto edge_cells = [&](const Mesh_data& M) {
+    std::vector<std::vector<Index>> cells(M.number_of_edges());
+    for (Index e = 0; e < M.number_of_edges(); ++e) {
+      const auto& edge = M.edges[e];
+      if (M.edge_is_closed(e) && !edge.convex) continue;
+      const V ev = diff(M, edge.v[0], edge.v[1]);
+      for (int c = 0; c < grid.size(); ++c) {
+        bool possible = grid.meets_plane(c, ev);
+        for (Index t : edge.f)
+          if (possible && t != no_index) possible = !grid.strictly_positive(c, diff(M, edge.v[0], M.opposite_vertex(t, e)));
+        if (possible) cells[e].push_back(Index(c));
+      }
+    }
+    return cells;
+  };
+  // The vertices to test for a facet direction: those of its cell (all of them in the
+  // unlikely case that the double normal underflows to zero).
+  auto candidates = [&](const std::vector<std::vector<Index>>& by_cell, const Direction& d, const Mesh_data& M) {
+    const auto n = d.vector<double>(P, Q);
+    if (std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]) > 0 && std::isfinite(n[0] + n[1] + n[2]))
+      return by_cell[grid.cell_of(n)];
+    std::vector<Index> all;
+    for (Index v = 0; v < M.number_of_vertices(); ++v)
+      if (!M.vertex_is_isolated(v)) all.push_back(v);
+    return all;
+  };
+
   std::vector<Direction> dirs;
   // Case 1: facet of P and vertex of Q, vertex of P and facet of Q.
+  const auto q_vertices = vertex_cells(Q);
   for (Index t = 0; t < P.number_of_triangles(); ++t) {
     dirs.clear();
     facet_directions(P, Direction::FACET_OF_P, t, dirs);
-    for (Index v = 0; v < Q.number_of_vertices(); ++v)
-      for (const Direction& d : dirs)
-        if (!Q.vertex_is_isolated(v) && vertex_is_extreme(Q, v, d, P, Q))
-          keep_closure({2, t}, {0, v}, d);
+    for (const Direction& d : dirs)
+      for (Index v : candidates(q_vertices, d, Q))
+        if (vertex_is_extreme(Q, v, d, P, Q)) keep_closure({2, t}, {0, v}, d);
   }
+  const auto p_vertices = vertex_cells(P);
   for (Index t = 0; t < Q.number_of_triangles(); ++t) {
     dirs.clear();
     facet_directions(Q, Direction::FACET_OF_Q, t, dirs);
-    for (Index v = 0; v < P.number_of_vertices(); ++v)
-      for (const Direction& d : dirs)
-        if (!P.vertex_is_isolated(v) && vertex_is_extreme(P, v, d, P, Q))
-          keep_closure({0, v}, {2, t}, d);
+    for (const Direction& d : dirs)
+      for (Index v : candidates(p_vertices, d, P))
+        if (vertex_is_extreme(P, v, d, P, Q)) keep_closure({0, v}, {2, t}, d);
   }
   // Case 2: non-parallel edges extreme in a common normal direction.
+  const auto p_edges = edge_cells(P), q_edges = edge_cells(Q);
+  std::vector<std::vector<Index>> q_edges_by_cell(grid.size());
+  for (Index b = 0; b < Q.number_of_edges(); ++b)
+    for (Index c : q_edges[b]) q_edges_by_cell[c].push_back(b);
+  std::vector<Index> seen(Q.number_of_edges(), no_index); // last edge of P that paired with b
   for (Index a = 0; a < P.number_of_edges(); ++a) {
-    if (P.edge_is_closed(a) && !P.edges[a].convex) continue;
-    for (Index b = 0; b < Q.number_of_edges(); ++b) {
-      if (Q.edge_is_closed(b) && !Q.edges[b].convex) continue;
-      const Direction plus{Direction::EDGES, 1, a, b};
-      bool parallel = true;
-      for (int c = 0; c < 3 && parallel; ++c)
-        parallel = filtered_sign([&](auto nt) { return plus.vector<decltype(nt)>(P, Q)[c]; }) == CGAL::ZERO;
-      if (parallel) continue;
-      for (std::int8_t s : {1, -1}) {
-        const Direction d{Direction::EDGES, s, a, b};
-        if (edge_is_extreme(P, a, d, P, Q) && edge_is_extreme(Q, b, d, P, Q))
-          keep_closure({1, a}, {1, b}, d);
+    for (Index c : p_edges[a])
+      for (Index b : q_edges_by_cell[c]) {
+        if (seen[b] == a) continue;
+        seen[b] = a;
+        const Direction plus{Direction::EDGES, 1, a, b};
+        bool parallel = true;
+        for (int k = 0; k < 3 && parallel; ++k)
+          parallel = filtered_sign([&](auto nt) { return plus.vector<decltype(nt)>(P, Q)[k]; }) == CGAL::ZERO;
+        if (parallel) continue;
+        for (std::int8_t sgn : {1, -1}) {
+          const Direction d{Direction::EDGES, sgn, a, b};
+          if (edge_is_extreme(P, a, d, P, Q) && edge_is_extreme(Q, b, d, P, Q))
+            keep_closure({1, a}, {1, b}, d);
+        }
       }
-    }
   }
 
   if (!use_normal_filter) {
