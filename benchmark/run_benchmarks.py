@@ -9,7 +9,8 @@ Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
   threads          1 and 2 threads (and more where the machine has them): seconds and speedup
   peers            CGAL Nef minkowski_sum_3 (where it finishes in 10 minutes) and Manifold's
                    minkowskiSum (npm manifold-3d, installed here with npm), as ratios
-  pd               penetration-depth queries per second (benchmark/pd_queries.cpp)
+  pd               penetration-depth queries per second (benchmark/pd_queries.cpp), and against
+                   FCL on convex pairs (benchmark/pd_vs_fcl.cpp; needs Debian's libfcl-dev)
 Needs Debian's python3-matplotlib; the peers need node and npm.
 """
 import argparse
@@ -223,7 +224,13 @@ def bench_pd(run):
     write("pd", ["benchmark", "contact points", "µs per query", "queries per second", "build s"], rows,
           "knot1 (moving) against the octahedron x 1/16, contact space at d = 0.27% of the diagonal, built with "
           f"{os.cpu_count()} threads; queries near the contact space. Paper: 0.1 ms per query; goal: <= 2 µs. "
-          "FCL comparison: not built yet.")
+          "The FCL comparison on convex pairs is in pd_vs_fcl.md.")
+    fcl = os.path.join(os.path.dirname(run.pmsum), "pd_vs_fcl")
+    if os.path.exists(fcl):
+        subprocess.run([fcl, os.path.join(RESULTS, "pd_vs_fcl.md")], check=True, capture_output=True)
+        print("wrote pd_vs_fcl.md")
+    else:
+        print("pd_vs_fcl not built (apt-get install libfcl-dev, then rebuild)")
 
 
 def main():
