@@ -1,13 +1,11 @@
 // Penetration depth: CGAL_pmsum against FCL (GJK/EPA on convex meshes), side by side, on convex
 // pairs whose exact depth is known (distance to the nearest facet plane of the hull of q - p).
 //   pd_vs_fcl [OUT.md]       prints (and writes) a markdown table
-#include "../src/shapes.h"
+#include "../test/reference.h" // exact convex references (and the procedural shapes)
 
 #include <CGAL_pmsum/Penetration_depth.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Random.h>
-#include <CGAL/convex_hull_3.h>
 
 #include <fcl/fcl.h>
 
@@ -17,10 +15,8 @@
 #include <iostream>
 #include <sstream>
 
-using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
-using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<IK::Point_3>;
 using namespace pmsum_test;
+using Mesh = CGAL::Surface_mesh<IK::Point_3>;
 
 namespace {
 
@@ -55,19 +51,11 @@ int main(int argc, char** argv)
   for (unsigned seed : {21u, 22u, 23u}) {
     const Soup ps = random_convex(20 + 10 * int(seed % 3), seed), qs = transformed(random_convex(30, seed + 7), 0.7);
     const Mesh P = to_mesh<Mesh>(ps), Q = to_mesh<Mesh>(qs);
-    // exact contact space (convex): hull of q - p, as planes
-    std::vector<EK::Point_3> sums;
-    for (const auto& p : ps.points)
-      for (const auto& q : qs.points) sums.emplace_back(EK::FT(q[0]) - p[0], EK::FT(q[1]) - p[1], EK::FT(q[2]) - p[2]);
-    CGAL::Surface_mesh<EK::Point_3> hull;
-    CGAL::convex_hull_3(sums.begin(), sums.end(), hull);
-    std::vector<EK::Plane_3> planes;
+    // exact contact space (convex): hull of q - p
+    const Reference reference(ps, qs, /*negate_p=*/true);
+    const Exact_convex& contact = reference.pieces.front();
     CGAL::Bbox_3 box;
-    for (auto v : hull.vertices()) box += hull.point(v).bbox();
-    for (auto f : hull.faces()) {
-      auto h = hull.halfedge(f);
-      planes.emplace_back(hull.point(hull.source(h)), hull.point(hull.target(h)), hull.point(hull.target(hull.next(h))));
-    }
+    for (const auto& v : contact.vertices) box += v.bbox();
     const double diag = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) + std::pow(box.ymax() - box.ymin(), 2) +
                                   std::pow(box.zmax() - box.zmin(), 2));
     const double d = 0.005 * diag;
@@ -79,14 +67,10 @@ int main(int argc, char** argv)
     for (int i = 0; i < 2000; ++i) {
       const IK::Point_3 t(rng.get_double(box.xmin(), box.xmax()), rng.get_double(box.ymin(), box.ymax()),
                           rng.get_double(box.zmin(), box.zmax()));
-      const EK::Point_3 te(t.x(), t.y(), t.z());
-      bool in = true;
-      double depth = HUGE_VAL;
-      for (const auto& pl : planes) {
-        if (!pl.has_on_negative_side(te)) { in = false; break; }
-        depth = (std::min)(depth, std::sqrt(CGAL::to_double(CGAL::squared_distance(pl, te))));
+      if (const auto depth = contact.depth(EK::Point_3(t.x(), t.y(), t.z()))) {
+        ts.push_back(t);
+        exact.push_back(*depth);
       }
-      if (in) { ts.push_back(t); exact.push_back(depth); }
     }
 
     double ours_err = 0;

@@ -17,7 +17,9 @@
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace pmsum_test {
@@ -79,6 +81,17 @@ struct Exact_convex
       on |= (o == CGAL::COPLANAR);
     }
     return on ? 0 : -1;
+  }
+
+  /// For x strictly inside (full-dimensional pieces): its distance to the boundary, the
+  /// smallest distance to a facet plane. Nothing otherwise.
+  std::optional<double> depth(const EK::Point_3& x) const
+  {
+    if (flat || locate(x) >= 0) return std::nullopt;
+    double m = HUGE_VAL;
+    for (const auto& t : facets)
+      m = (std::min)(m, std::sqrt(CGAL::to_double(CGAL::squared_distance(EK::Plane_3(t[0], t[1], t[2]), x))));
+    return m;
   }
 };
 

@@ -164,33 +164,19 @@ TEST_CASE("penetration depth of convex pairs: within d of the exact depth", "[ap
     auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
     REQUIRE(pd.number_of_contact_points() > 1000);
     // exact contact space: hull of q - p; PD(t) = min over its facets of the distance to the plane
-    std::vector<EK::Point_3> sums;
-    for (const auto& p : ps.points)
-      for (const auto& q : qs.points) sums.emplace_back(EK::FT(q[0]) - p[0], EK::FT(q[1]) - p[1], EK::FT(q[2]) - p[2]);
-    CGAL::Surface_mesh<EK::Point_3> hull;
-    CGAL::convex_hull_3(sums.begin(), sums.end(), hull);
-    std::vector<EK::Plane_3> planes;
-    for (auto f : hull.faces()) {
-      auto h = hull.halfedge(f);
-      planes.emplace_back(hull.point(hull.source(h)), hull.point(hull.target(h)), hull.point(hull.target(hull.next(h))));
-    }
+    const Reference reference(ps, qs, /*negate_p=*/true);
+    const Exact_convex& contact = reference.pieces.front();
     CGAL::Random rng(seed);
     std::size_t inside = 0;
     for (int i = 0; i < 300; ++i) {
       const IK::Point_3 t(rng.get_double(-2, 2), rng.get_double(-2, 2), rng.get_double(-2, 2));
-      const EK::Point_3 te(t.x(), t.y(), t.z());
-      bool in = true;
-      double exact = HUGE_VAL;
-      for (const auto& pl : planes) {
-        if (!pl.has_on_negative_side(te)) in = false; // outward planes: inside is the negative side
-        exact = (std::min)(exact, std::sqrt(CGAL::to_double(CGAL::squared_distance(pl, te))));
-      }
+      const std::optional<double> exact = contact.depth(EK::Point_3(t.x(), t.y(), t.z()));
       const auto r = pd.query(t);
-      REQUIRE(r.overlapping == in);
-      if (!in) { REQUIRE(r.depth == 0); continue; }
+      REQUIRE(r.overlapping == bool(exact));
+      if (!exact) { REQUIRE(r.depth == 0); continue; }
       ++inside;
-      REQUIRE(r.depth >= exact - 1e-9);
-      REQUIRE(r.depth < exact + d);
+      REQUIRE(r.depth >= *exact - 1e-9);
+      REQUIRE(r.depth < *exact + d);
       // the translation reaches the contact space: the contact point is exact, its double
       // rounding may be 1e-16 inside; just beyond it (the sum is convex) P and Q are apart
       REQUIRE(!pd.overlaps(r.contact + 1e-9 * r.direction));
