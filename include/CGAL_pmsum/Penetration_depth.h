@@ -48,13 +48,19 @@ public:
   template <class ConcurrencyTag = CGAL::Sequential_tag>
   static Penetration_depth make(const PolygonMeshP& P, const PolygonMeshQ& Q, double d)
   {
-    Penetration_depth pd(P, Q, d);
-    using Mesh_point = typename boost::property_traits<
-      typename boost::property_map<PolygonMeshP, CGAL::vertex_point_t>::const_type>::value_type;
-    std::vector<Mesh_point> contact;
-    point_minkowski_sum<ConcurrencyTag>(P, Q, d, std::back_inserter(contact), parameters::negate_first_mesh(true));
-    for (const Mesh_point& c : contact)
-      pd.m_points.emplace_back(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
+    if (!(d > 0) || !std::isfinite(d)) throw Invalid_input("d must be positive and finite (got " + std::to_string(d) + ")");
+    const auto start = internal::Clock::now();
+    Penetration_depth pd(P, Q, d); // -P and Q, converted and checked once
+    Statistics stats;
+    internal::run_pipeline<ConcurrencyTag>(
+      *pd.m_p, *pd.m_q, d, internal::Pipeline_options{}, stats,
+      [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction&) {
+        double c[3];
+        for (int i = 0; i < 3; ++i)
+          c[i] = internal::sample_coordinate<double>(*pd.m_p, sp, i) + internal::sample_coordinate<double>(*pd.m_q, sq, i);
+        pd.m_points.emplace_back(c[0], c[1], c[2]);
+      },
+      start);
     pd.build();
     return pd;
   }
