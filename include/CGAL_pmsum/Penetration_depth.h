@@ -48,7 +48,7 @@ public:
   template <class ConcurrencyTag = CGAL::Sequential_tag>
   static Penetration_depth make(const PolygonMeshP& P, const PolygonMeshQ& Q, double d)
   {
-    if (!(d > 0) || !std::isfinite(d)) throw Invalid_input("d must be positive and finite (got " + std::to_string(d) + ")");
+    internal::check_covering_distance(d);
     const auto start = internal::Clock::now();
     Penetration_depth pd(P, Q, d); // -P and Q, converted and checked once
     Statistics stats;

@@ -27,10 +27,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
-#include <chrono>
 #include <cmath>
-#include <memory>
-#include <optional>
 #include <functional>
 #include <type_traits>
 #include <utility>
@@ -130,9 +127,7 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
   Pmsum::Statistics& stats = *choose_parameter(get_parameter(np_p, Pmsum::internal_np::statistics), &local_stats);
   stats = Pmsum::Statistics();
 
-  CGAL_precondition_msg(d > 0 && std::isfinite(d), "d must be positive and finite");
-  if (!(d > 0) || !std::isfinite(d))
-    throw Pmsum::Invalid_input("d must be positive and finite (got " + std::to_string(d) + ")");
+  in::check_covering_distance(d);
 
   // Stage 0: input.
   auto start = in::Clock::now();

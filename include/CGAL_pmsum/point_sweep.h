@@ -28,7 +28,7 @@ OutputIterator point_sweep(const PolygonMesh& P, const PointRange& path, double 
   namespace in = internal;
   using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
-  if (!(d > 0) || !std::isfinite(d)) throw Invalid_input("d must be positive and finite (got " + std::to_string(d) + ")");
+  internal::check_covering_distance(d);
   const auto start = in::Clock::now();
   in::Mesh_descriptors<PolygonMesh> desc;
   const in::Mesh_data mp = in::make_mesh_data(P, get(CGAL::vertex_point, P), false, false, "P", desc);

@@ -26,6 +26,8 @@
 #endif
 
 #include <chrono>
+#include <cmath>
+#include <string>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -39,6 +41,14 @@ namespace internal {
 using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t)
 { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// The covering distance precondition of every entry point: d > 0 and finite.
+inline void check_covering_distance(double d)
+{
+  CGAL_precondition_msg(d > 0 && std::isfinite(d), "d must be positive and finite");
+  if (!(d > 0) || !std::isfinite(d))
+    throw Invalid_input("d must be positive and finite (got " + std::to_string(d) + ")");
+}
 
 struct Pipeline_options
 {
