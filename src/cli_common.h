@@ -133,10 +133,9 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
   return m;
 }
 
-/// Diagonal of the bounding box of P + Q (the sum of the two boxes).
-inline double sum_diagonal(const Mesh& P, const Mesh& Q)
+/// Diagonal of the box a + b (the bounding box of a Minkowski sum); b empty: a's diagonal.
+inline double sum_diagonal(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b = CGAL::Bbox_3(0, 0, 0, 0, 0, 0))
 {
-  const CGAL::Bbox_3 a = PMP::bbox(P), b = PMP::bbox(Q);
   double s = 0;
   for (int c = 0; c < 3; ++c) s += std::pow((a.max(c) - a.min(c)) + (b.max(c) - b.min(c)), 2);
   return std::sqrt(s);
@@ -372,7 +371,7 @@ inline Sum_input read_sum_input(const Arguments& args)
     if (!(s > 0) || !std::isfinite(s)) throw Usage_error("--scale-q must be a positive number");
     scale_mesh(in.Q, s);
   }
-  in.diagonal = sum_diagonal(in.P, in.Q);
+  in.diagonal = sum_diagonal(PMP::bbox(in.P), PMP::bbox(in.Q));
   in.d = in.relative ? in.d_argument * in.diagonal : in.d_argument;
   in.read_seconds = seconds_since(start);
   return in;

@@ -116,9 +116,7 @@ int command_offset(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   Mesh P = read_mesh(args.positional[0], "MESH", quiet);
   if (args.flag("--relative")) {
-    const CGAL::Bbox_3 b = PMP::bbox(P);
-    const double diag = std::sqrt(std::pow(b.xmax() - b.xmin(), 2) + std::pow(b.ymax() - b.ymin(), 2) +
-                                  std::pow(b.zmax() - b.zmin(), 2));
+    const double diag = sum_diagonal(PMP::bbox(P));
     r *= diag;
     d *= diag;
   }
@@ -256,11 +254,9 @@ int command_sweep(int argc, char** argv)
     path.emplace_back(x, y, z);
   }
   if (args.flag("--relative")) {
-    CGAL::Bbox_3 b = PMP::bbox(P), pb;
-    for (const auto& p : path) pb += p.bbox();
-    double s = 0;
-    for (int c = 0; c < 3; ++c) s += std::pow((b.max(c) - b.min(c)) + (pb.max(c) - pb.min(c)), 2);
-    d *= std::sqrt(s);
+    CGAL::Bbox_3 path_box;
+    for (const auto& p : path) path_box += p.bbox();
+    d *= sum_diagonal(PMP::bbox(P), path_box);
   }
   std::vector<K::Point_3> pts;
   CGAL::Pmsum::Statistics stats;
