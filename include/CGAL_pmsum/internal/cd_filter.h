@@ -145,6 +145,10 @@ public:
 
   const Cd_statistics& statistics() const { return m_stats; }
 
+  /// Did the last query decide without looking at the perturbation (every predicate it
+  /// evaluated was non-zero at x itself)? Then its answer is the same for any direction.
+  bool decided_without_perturbation() const { return !m_perturbed; }
+
   /// Is x = p + q, perturbed along directions[first] (then the other directions of the
   /// candidate, then the axes), outside P + Q?
   bool is_free(const Sample& p, const Sample& q, const Direction* directions, std::uint32_t count,
@@ -170,6 +174,7 @@ private:
   bool configuration_is_free()
   {
     ++m_stats.queries;
+    m_perturbed = false;
     // 1. Does a triangle (or bare edge) of the moving mesh cross a triangle of the static
     //    mesh? (The static mesh has at least as many triangles; bare edges of the static
     //    mesh are tested against the moving triangles by brute force.)
@@ -300,6 +305,7 @@ private:
   template <class G>
   CGAL::Sign perturbation_sign(const G& g)
   {
+    m_perturbed = true;
     for (std::uint32_t k = 0; k < m_dir_count; ++k) {
       const Direction& d = m_dirs[(m_dir_first + k) % m_dir_count];
       const CGAL::Sign s = filtered_sign([&](auto nt) {
@@ -505,6 +511,7 @@ private:
   const Tree_mesh& m_moving;
   double m_margin;
   Cd_statistics m_stats;
+  bool m_perturbed = false; // the current query looked at the perturbation
 
   // query
   const Sample* m_sp = nullptr; // the candidate x = p + q, or

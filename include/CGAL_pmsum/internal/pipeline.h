@@ -102,11 +102,13 @@ void run_pipeline(const Mesh_data& mp, const Mesh_data& mq, double d, const Pipe
     for (const Sample& s_p : samples_p)
       for (const Sample& s_q : samples_q) {
         if (!filter) { kept.push_back({s_p, s_q, fp.first_direction}); continue; }
-        for (std::uint32_t k = 0; k < fp.number_of_directions; ++k)
+        for (std::uint32_t k = 0; k < fp.number_of_directions; ++k) {
           if (filter->is_free(s_p, s_q, dirs, fp.number_of_directions, k)) {
             kept.push_back({s_p, s_q, fp.first_direction + k});
             break;
           }
+          if (filter->decided_without_perturbation()) break; // the same for every direction
+        }
       }
   };
   constexpr bool parallel =
