@@ -8,6 +8,7 @@
 #define CGAL_PMSUM_CLI_COMMON_H
 
 #include <CGAL_pmsum/point_minkowski_sum.h>
+#include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -323,11 +324,15 @@ const char* const sum_options_help =
   "  --scale-q S            multiply Q's coordinates by S first (e.g. to size a tool)\n"
   "  --no-normal-filter     test every sample pair with the CD filter (slow)\n"
   "  --no-cd-filter         keep every candidate of the normal filter (not all on the boundary)\n"
+  "  --no-octree-filter     CD-test candidates in cells certified interior too (same output, slower)\n"
+  "  --levels D1,D2,...     coarse to fine: first the larger covering distances D1 > D2 > ... > D\n"
+  "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
+  "                         K to OUT with .levelK before the extension (validate: the last)\n"
   "  --threads N            worker threads (default: all cores; 1 = sequential)\n"
   "  --force                run even if the estimated output exceeds the available memory\n"
   "  --quiet                no notes and no progress bar\n";
-const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads"};
-const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter",
+const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
+const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter",
                                             "--force", "--quiet", "--help", "-h"};
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
@@ -338,8 +343,9 @@ struct Sum_input
   std::string p_path, q_path;
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
-  bool relative = false, negate = false, normal_filter = true, cd_filter = true, force = false, quiet = false;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, force = false, quiet = false;
   int threads = 0; // 0: all cores
+  std::vector<double> coarser_d; // --levels: coarser covering distances, coarse to fine (absolute)
 };
 
 inline Sum_input read_sum_input(const Arguments& args)
@@ -355,6 +361,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.negate = args.flag("--negate-p");
   in.normal_filter = !args.flag("--no-normal-filter");
   in.cd_filter = !args.flag("--no-cd-filter");
+  in.octree_filter = !args.flag("--no-octree-filter");
   in.force = args.flag("--force");
   if (args.has("--threads")) {
     const double t = args.number("--threads");
@@ -373,6 +380,20 @@ inline Sum_input read_sum_input(const Arguments& args)
   }
   in.diagonal = sum_diagonal(PMP::bbox(in.P), PMP::bbox(in.Q));
   in.d = in.relative ? in.d_argument * in.diagonal : in.d_argument;
+  if (args.has("--levels")) {
+    std::stringstream list(args.values.at("--levels"));
+    std::string item;
+    double previous = std::numeric_limits<double>::infinity();
+    while (std::getline(list, item, ',')) {
+      char* end = nullptr;
+      const double x = std::strtod(item.c_str(), &end);
+      if (item.empty() || *end != '\0' || !(x > in.d_argument) || !(x < previous) || !std::isfinite(x))
+        throw Usage_error("--levels needs decreasing distances larger than -d, separated by commas, got '" +
+                          args.values.at("--levels") + "'");
+      previous = x;
+      in.coarser_d.push_back(in.relative ? x * in.diagonal : x);
+    }
+  }
   in.read_seconds = seconds_since(start);
   return in;
 }
@@ -395,7 +416,10 @@ void with_threads(int threads, F&& f)
 
 /// Runs point_minkowski_sum with a progress bar; refuses (exit code 3) a run whose output
 /// would not fit in memory, unless --force.
-inline std::vector<Record> compute_sum(const Sum_input& in, CGAL::Pmsum::Statistics& stats)
+/// With --levels, `coarser_level(k, stats, records)` receives each coarser level first.
+inline std::vector<Record> compute_sum(
+  const Sum_input& in, CGAL::Pmsum::Statistics& stats,
+  const std::function<void(std::size_t, const CGAL::Pmsum::Statistics&, std::vector<Record>&&)>& coarser_level = {})
 {
   // Each output point is held in memory before the file is written.
   const std::size_t limit = in.force ? std::size_t(-1) : memory_budget_bytes() / sizeof(Record);
@@ -404,13 +428,29 @@ inline std::vector<Record> compute_sum(const Sum_input& in, CGAL::Pmsum::Statist
   std::function<bool(double)> callback = [&](double f) { return progress(f); };
   const auto np = CGAL::parameters::use_normal_filter(in.normal_filter)
                     .use_cd_filter(in.cd_filter)
+                    .use_octree_filter(in.octree_filter)
                     .negate_first_mesh(in.negate)
                     .statistics(stats)
                     .maximum_number_of_candidates(limit)
                     .callback(callback);
   try {
     with_threads(in.threads, [&](auto tag) {
-      CGAL::point_minkowski_sum<decltype(tag)>(in.P, in.Q, in.d, std::back_inserter(records), np);
+      if (in.coarser_d.empty()) {
+        CGAL::point_minkowski_sum<decltype(tag)>(in.P, in.Q, in.d, std::back_inserter(records), np);
+        return;
+      }
+      std::vector<double> ds = in.coarser_d;
+      ds.push_back(in.d);
+      CGAL::point_minkowski_sum_coarse_to_fine<decltype(tag)>(
+        in.P, in.Q, ds,
+        [&](std::size_t k, const CGAL::Pmsum::Statistics& s, std::vector<Record>&& level) {
+          if (k + 1 < ds.size()) {
+            if (coarser_level) coarser_level(k, s, std::move(level));
+          } else {
+            records = std::move(level);
+          }
+        },
+        np);
     });
   } catch (const CGAL::Pmsum::Too_many_candidates& e) {
     std::ostringstream msg;
@@ -439,13 +479,15 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("faces", in.P.number_of_faces()).integer("samples", stats.samples_p);
   jq.str("file", in.q_path).integer("vertices", in.Q.number_of_vertices())
     .integer("faces", in.Q.number_of_faces()).integer("samples", stats.samples_q);
-  filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter);
+  filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter).boolean("octree", in.octree_filter);
   Json j;
   const unsigned cores = std::thread::hardware_concurrency();
   j.object("p", jp).object("q", jq).integer("threads", in.threads ? std::size_t(in.threads) : std::size_t(cores ? cores : 1))
     .num("d", in.d).num("d_argument", in.d_argument).boolean("relative", in.relative)
     .num("sum_bbox_diagonal", in.diagonal).boolean("negate_p", in.negate).object("filters", filters)
     .integer("feature_pairs", stats.feature_pairs).integer("candidates", stats.candidates)
+    .integer("octree_leaves", stats.octree_leaves).integer("octree_certified_leaves", stats.octree_certified_leaves)
+    .integer("candidates_certified", stats.candidates_certified).integer("candidates_reused", stats.candidates_reused)
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
     .integer("containment_tests", stats.containment_tests).integer("output_points", stats.output_points);
   return j;

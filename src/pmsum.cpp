@@ -61,18 +61,46 @@ int command_sum(int argc, char** argv)
   const auto t_start = std::chrono::steady_clock::now();
   const Sum_input in = read_sum_input(args);
   CGAL::Pmsum::Statistics stats;
-  const std::vector<Record> records = compute_sum(in, stats);
+  // Coarse to fine (--levels): each coarser level is written as it completes.
+  std::vector<std::string> levels;
+  auto t_level = t_start;
+  auto level_summary = [&](double d, const CGAL::Pmsum::Statistics& s, const std::string& path) {
+    Json l;
+    l.num("d", d).str("output", path).integer("samples_p", s.samples_p).integer("samples_q", s.samples_q)
+      .integer("candidates", s.candidates).integer("candidates_reused", s.candidates_reused)
+      .integer("candidates_certified", s.candidates_certified).integer("cd_queries", s.cd_queries)
+      .integer("output_points", s.output_points).num("seconds", seconds_since(t_level));
+    levels.push_back(l.dump(2));
+    t_level = std::chrono::steady_clock::now();
+  };
+  double write_seconds = 0;
+  const std::vector<Record> records = compute_sum(in, stats, [&](std::size_t k, const CGAL::Pmsum::Statistics& s,
+                                                                 std::vector<Record>&& level) {
+    const std::string path = out_path.substr(0, out_path.size() - out_ext.size() - 1) + ".level" +
+                             std::to_string(k) + "." + out_ext;
+    const auto t_write = std::chrono::steady_clock::now();
+    write_points(path, oriented_points(level));
+    write_seconds += seconds_since(t_write);
+    level_summary(in.coarser_d[k], s, path);
+  });
+  if (!in.coarser_d.empty()) level_summary(in.d, stats, out_path);
 
   const auto t_write = std::chrono::steady_clock::now();
   write_points(out_path, oriented_points(records));
-  const double write_seconds = seconds_since(t_write);
+  write_seconds += seconds_since(t_write);
 
   if (args.has("--json")) {
     Json seconds;
     seconds.num("read", in.read_seconds).num("setup", stats.seconds_setup).num("normal_filter", stats.seconds_normal_filter)
+      .num("octree_filter", stats.seconds_octree_filter)
       .num("cd_filter", stats.seconds_cd_filter).num("write", write_seconds).num("total", seconds_since(t_start));
     Json j = sum_summary(in, stats);
     j.str("command", "sum").str("output", out_path).object("seconds", seconds);
+    if (!levels.empty()) {
+      std::string list = "[";
+      for (std::size_t k = 0; k < levels.size(); ++k) list += (k ? ", " : "") + levels[k];
+      j.add("levels", list + "]");
+    }
     write_json(args.values.at("--json"), j);
   }
   if (!in.quiet)

@@ -226,3 +226,46 @@ TEST_CASE("the direction grid keeps exactly the brute-force pairs", "[filters][g
       CHECK(got == expected);
     }
 }
+
+#include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
+
+TEST_CASE("coarse to fine: every level exact and covering, coarser points reused", "[nonconvex][coarse-to-fine]")
+{
+  const Soup P = l_shape(), Q = tetrahedron(0.6);
+  const Mesh mp = to_mesh<Mesh>(P), mq = to_mesh<Mesh>(Q);
+  const Reference ref(P, Q);
+  const std::vector<double> ds = {0.4, 0.2, 0.1};
+  std::vector<std::vector<Record>> levels;
+  std::vector<CGAL::Pmsum::Statistics> stats;
+  CGAL::point_minkowski_sum_coarse_to_fine(mp, mq, ds, [&](std::size_t k, const CGAL::Pmsum::Statistics& s,
+                                                           std::vector<Record>&& records) {
+    CHECK(k == levels.size());
+    levels.push_back(std::move(records));
+    stats.push_back(s);
+  });
+  REQUIRE(levels.size() == ds.size());
+  std::set<std::tuple<double, double, double>> previous;
+  for (std::size_t k = 0; k < ds.size(); ++k) {
+    INFO("level " << k << ": " << levels[k].size() << " points, " << stats[k].candidates_reused << " reused");
+    Result r;
+    for (const Record& rec : levels[k]) {
+      r.points.push_back(rec.point);
+      r.exact.push_back(CGAL::Pmsum::exact_point<EK>(rec, get(CGAL::vertex_point, mp), get(CGAL::vertex_point, mq)));
+    }
+    CHECK(exactness_failures(r, ref) == 0);
+    CHECK(coverage_distance(ref.boundary_samples(ds[k] / 8), r.points) < ds[k]);
+    CHECK(stats[k].output_points == levels[k].size());
+    std::set<std::tuple<double, double, double>> here;
+    for (const auto& p : r.points) here.insert({p.x(), p.y(), p.z()});
+    // Every coarser boundary point is a candidate again, reused, and still a boundary point.
+    for (const auto& p : previous) CHECK(here.count(p) == 1);
+    if (k > 0) {
+      CHECK(stats[k].candidates_reused >= stats[k - 1].candidates);
+    }
+    previous = here;
+  }
+  // The covering distances must decrease.
+  CHECK_THROWS_AS(CGAL::point_minkowski_sum_coarse_to_fine(mp, mq, std::vector<double>{0.1, 0.2},
+                                                            [](std::size_t, const CGAL::Pmsum::Statistics&, std::vector<Record>&&) {}),
+                  CGAL::Pmsum::Invalid_input);
+}

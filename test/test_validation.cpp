@@ -143,6 +143,32 @@ TEST_CASE("cached suite cases: exact and covered, holes included", "[validation]
   }
 }
 
+TEST_CASE("the octree filter skips only inner candidates: same output, holes included", "[validation][octree]")
+{
+  // The difficult void of the suite (no vertex + vertex point on it) and a pair of high genus.
+  const std::pair<const char*, const char*> pairs[] = {{"plates", "cube-small"}, {"frame", "knot"}};
+  for (const auto& [p, q] : pairs) {
+    INFO(p << " + " << q);
+    const Mesh P = load(p), Q = load(q);
+    const double d = 0.05 * sum_diagonal(P, Q);
+    std::vector<CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, IK>> with, without;
+    CGAL::Pmsum::Statistics s_with, s_without;
+    CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(with), CGAL::parameters::statistics(s_with));
+    CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(without),
+                              CGAL::parameters::use_octree_filter(false).statistics(s_without));
+    INFO("certified " << s_with.candidates_certified << " of " << s_with.candidates);
+    REQUIRE(s_with.candidates_certified > 0); // else this test would test nothing
+    CHECK(s_without.candidates_certified == 0);
+    CHECK(s_with.cd_queries < s_without.cd_queries);
+    REQUIRE(with.size() == without.size());
+    for (std::size_t i = 0; i < with.size(); ++i) {
+      CHECK(with[i].point == without[i].point);
+      CHECK(with[i].origin_p.vertices == without[i].origin_p.vertices);
+      CHECK(with[i].origin_q.vertices == without[i].origin_q.vertices);
+    }
+  }
+}
+
 #include <CGAL_pmsum/Penetration_depth.h>
 
 #include <CGAL/AABB_traits.h>

@@ -17,12 +17,17 @@ struct Statistics
   std::size_t samples_p = 0, samples_q = 0; ///< sizes of the d-coverings of P and Q
   std::size_t feature_pairs = 0;            ///< feature pairs kept by the normal filter
   std::size_t candidates = 0;               ///< sample pairs p + q kept by the normal filter
+  std::size_t octree_leaves = 0;            ///< leaf cells (size d) holding candidates
+  std::size_t octree_certified_leaves = 0;  ///< of them, certified interior by the octree filter
+  std::size_t candidates_certified = 0;     ///< candidates in certified cells: never CD-tested
+  std::size_t candidates_reused = 0;        ///< coarse to fine: decided by the coarser level
   std::size_t cd_queries = 0;               ///< collision tests (one per candidate and direction tried)
   std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests inside them
   std::size_t containment_tests = 0;        ///< exact point-in-solid tests inside them
   std::size_t output_points = 0;
   double seconds_setup = 0;                 ///< input checks, sampling resolutions, AABB trees
   double seconds_normal_filter = 0;
+  double seconds_octree_filter = 0;         ///< interior certificate and leaf cells
   double seconds_cd_filter = 0;             ///< candidate enumeration and CD filter
 };
 

@@ -21,6 +21,7 @@ namespace Pmsum {
 namespace internal_np {
 enum use_normal_filter_t { use_normal_filter };
 enum use_cd_filter_t { use_cd_filter };
+enum use_octree_filter_t { use_octree_filter };
 enum negate_first_mesh_t { negate_first_mesh };
 enum statistics_t { statistics };
 enum treat_as_surface_t { treat_as_surface };
@@ -61,6 +62,11 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<bool, internal_np::use_cd_filter_t, Named_parameters>
   use_cd_filter(bool b) const { return {b, *this}; }
 
+  /// Run the octree filter (default `true`): candidates in octree cells certified to lie in
+  /// the interior of the sum are not CD-tested. The output is the same either way.
+  Named_parameters<bool, internal_np::use_octree_filter_t, Named_parameters>
+  use_octree_filter(bool b) const { return {b, *this}; }
+
   /// Compute the boundary of (-P) + Q instead of P + Q (default `false`): the contact space
   /// of a robot P translating among obstacles Q.
   Named_parameters<bool, internal_np::negate_first_mesh_t, Named_parameters>
@@ -78,6 +84,10 @@ use_normal_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal
 /// \copydoc CGAL::Pmsum::Named_parameters::use_cd_filter
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_cd_filter_t>
 use_cd_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_cd_filter_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::use_octree_filter
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_octree_filter_t>
+use_octree_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_octree_filter_t>(b); }
 
 /// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>

@@ -62,6 +62,73 @@ Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptor
   return f;
 }
 
+/// The input stage of a sum: the named parameters read, P (or -P) and Q copied and checked.
+/// make_emit(out) gives the pipeline's emit function writing records (or points) to out.
+template <class PolygonMeshP, class PolygonMeshQ, class NamedParametersP, class NamedParametersQ>
+struct Prepared_sum
+{
+  using GT = typename GetGeomTraits<PolygonMeshP, NamedParametersP>::type;
+  using Record = Minkowski_sum_boundary_point<PolygonMeshP, PolygonMeshQ, GT>;
+  using FT = typename GT::FT;
+
+  Prepared_sum(const PolygonMeshP& P, const PolygonMeshQ& Q, double d, const NamedParametersP& np_p,
+               const NamedParametersQ& np_q, Statistics& local_stats)
+    : stats(*parameters::choose_parameter(parameters::get_parameter(np_p, internal_np::statistics), &local_stats))
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    const auto vpm_p = choose_parameter(get_parameter(np_p, CGAL::internal_np::vertex_point),
+                                        get_const_property_map(CGAL::vertex_point, P));
+    const auto vpm_q = choose_parameter(get_parameter(np_q, CGAL::internal_np::vertex_point),
+                                        get_const_property_map(CGAL::vertex_point, Q));
+    options.use_normal_filter = choose_parameter(get_parameter(np_p, internal_np::use_normal_filter), true);
+    options.use_cd_filter = choose_parameter(get_parameter(np_p, internal_np::use_cd_filter), true);
+    options.use_octree_filter = choose_parameter(get_parameter(np_p, internal_np::use_octree_filter), true);
+    options.max_candidates =
+      choose_parameter(get_parameter(np_p, internal_np::maximum_number_of_candidates), std::size_t(-1));
+    options.callback =
+      choose_parameter(get_parameter(np_p, CGAL::internal_np::callback), std::function<bool(double)>());
+    negate_p = choose_parameter(get_parameter(np_p, internal_np::negate_first_mesh), false);
+    stats = Statistics();
+
+    check_covering_distance(d);
+    start = Clock::now();
+    mp = make_mesh_data(P, vpm_p, negate_p, choose_parameter(get_parameter(np_p, internal_np::treat_as_surface), false),
+                        "P", desc_p);
+    mq = make_mesh_data(Q, vpm_q, false, choose_parameter(get_parameter(np_q, internal_np::treat_as_surface), false),
+                        "Q", desc_q);
+  }
+
+  /// emit(p, q, direction) for the pipeline: writes a Record, or a Point_3 if `out` takes no
+  /// records, to out.
+  template <class OutputIterator>
+  auto make_emit(OutputIterator& out) const
+  {
+    return [this, &out](const Sample& sp, const Sample& sq, const Direction& direction) {
+      const typename GT::Point_3 x(sample_coordinate<FT>(mp, sp, 0) + sample_coordinate<FT>(mq, sq, 0),
+                                   sample_coordinate<FT>(mp, sp, 1) + sample_coordinate<FT>(mq, sq, 1),
+                                   sample_coordinate<FT>(mp, sp, 2) + sample_coordinate<FT>(mq, sq, 2));
+      if constexpr (Accepts_record<OutputIterator, Record>::value) {
+        const auto n = direction.template vector<double>(mp, mq);
+        const double len = std::sqrt(dot(n, n));
+        Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len), to_mesh_feature(sp, desc_p),
+                 to_mesh_feature(sq, desc_q), negate_p};
+        *out++ = r;
+      } else {
+        *out++ = x;
+      }
+    };
+  }
+
+  Statistics& stats;
+  Pipeline_options options;
+  bool negate_p = false;
+  Clock::time_point start;
+  Mesh_descriptors<PolygonMeshP> desc_p;
+  Mesh_descriptors<PolygonMeshQ> desc_q;
+  Mesh_data mp, mq;
+};
+
 } // namespace internal
 } // namespace Pmsum
 
@@ -86,7 +153,7 @@ Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptor
 ///
 /// \param d covering distance, > 0
 /// \param np_p named parameters for P and for the algorithm: `vertex_point_map`,
-///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true),
+///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true), `use_octree_filter` (true),
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,
@@ -105,56 +172,11 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
                                    const NamedParametersP& np_p = parameters::default_values(),
                                    const NamedParametersQ& np_q = parameters::default_values())
 {
-  namespace in = Pmsum::internal;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using GT = typename GetGeomTraits<PolygonMeshP, NamedParametersP>::type;
-  using Record = Pmsum::Minkowski_sum_boundary_point<PolygonMeshP, PolygonMeshQ, GT>;
-  using FT = typename GT::FT;
-
-  const auto vpm_p = choose_parameter(get_parameter(np_p, internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, P));
-  const auto vpm_q = choose_parameter(get_parameter(np_q, internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, Q));
-  const bool use_normal_filter = choose_parameter(get_parameter(np_p, Pmsum::internal_np::use_normal_filter), true);
-  const bool use_cd_filter = choose_parameter(get_parameter(np_p, Pmsum::internal_np::use_cd_filter), true);
-  const bool negate_p = choose_parameter(get_parameter(np_p, Pmsum::internal_np::negate_first_mesh), false);
-  const std::size_t max_candidates = choose_parameter(
-    get_parameter(np_p, Pmsum::internal_np::maximum_number_of_candidates), std::size_t(-1));
-  const std::function<bool(double)> callback =
-    choose_parameter(get_parameter(np_p, internal_np::callback), std::function<bool(double)>());
   Pmsum::Statistics local_stats;
-  Pmsum::Statistics& stats = *choose_parameter(get_parameter(np_p, Pmsum::internal_np::statistics), &local_stats);
-  stats = Pmsum::Statistics();
-
-  in::check_covering_distance(d);
-
-  // Stage 0: input.
-  auto start = in::Clock::now();
-  in::Mesh_descriptors<PolygonMeshP> desc_p;
-  in::Mesh_descriptors<PolygonMeshQ> desc_q;
-  const in::Mesh_data mp = in::make_mesh_data(
-    P, vpm_p, negate_p, choose_parameter(get_parameter(np_p, Pmsum::internal_np::treat_as_surface), false), "P", desc_p);
-  const in::Mesh_data mq = in::make_mesh_data(
-    Q, vpm_q, false, choose_parameter(get_parameter(np_q, Pmsum::internal_np::treat_as_surface), false), "Q", desc_q);
-
-  const in::Pipeline_options options{use_normal_filter, use_cd_filter, max_candidates, callback};
-  auto emit = [&](const in::Sample& sp, const in::Sample& sq, const in::Direction& direction) {
-    const typename GT::Point_3 x(in::sample_coordinate<FT>(mp, sp, 0) + in::sample_coordinate<FT>(mq, sq, 0),
-                                 in::sample_coordinate<FT>(mp, sp, 1) + in::sample_coordinate<FT>(mq, sq, 1),
-                                 in::sample_coordinate<FT>(mp, sp, 2) + in::sample_coordinate<FT>(mq, sq, 2));
-    if constexpr (Pmsum::internal::Accepts_record<OutputIterator, Record>::value) {
-      const auto n = direction.template vector<double>(mp, mq);
-      const double len = std::sqrt(in::dot(n, n));
-      Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len), in::to_mesh_feature(sp, desc_p),
-               in::to_mesh_feature(sq, desc_q), negate_p};
-      *out++ = r;
-    } else {
-      *out++ = x;
-    }
-  };
-
-  in::run_pipeline<ConcurrencyTag>(mp, mq, d, options, stats, emit, start);
+  const Pmsum::internal::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(
+    P, Q, d, np_p, np_q, local_stats);
+  Pmsum::internal::run_pipeline<ConcurrencyTag>(sum.mp, sum.mq, d, sum.options, sum.stats, sum.make_emit(out),
+                                                sum.start);
   return out;
 }
 

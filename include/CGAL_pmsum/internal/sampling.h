@@ -83,23 +83,48 @@ inline double triangle_covering_radius(const std::array<double, 3>& a, const std
 class Mesh_sampling
 {
 public:
-  Mesh_sampling(const Mesh_data& mesh, double radius, const std::string& name) : m_mesh(&mesh)
+  /// With `coarser` (a sampling of the same mesh with a larger radius), every resolution is
+  /// rounded up to a multiple of the coarser one, so that every coarser sample is a sample
+  /// here too (coarse-to-fine runs reuse the coarser level's decisions).
+  Mesh_sampling(const Mesh_data& mesh, double radius, const std::string& name,
+                const Mesh_sampling* coarser = nullptr)
+    : m_mesh(&mesh)
   {
     // A small safety factor absorbs the rounding of the double computations of f(T).
-    auto resolution = [&](double length) {
-      const double n = std::ceil(length * (1 + 1e-9) / radius);
+    auto resolution = [&](double length, std::int32_t multiple_of) {
+      double n = (std::max)(1., std::ceil(length * (1 + 1e-9) / radius));
+      n = multiple_of * std::ceil(n / multiple_of);
       if (!(n <= double(max_denominator)))
         throw Invalid_input("d is too small for " + name + ": a feature would need more than " +
                             std::to_string(max_denominator) + " subdivisions");
-      return std::int32_t((std::max)(1., n));
+      return std::int32_t(n);
     };
-    for (const auto& t : mesh.triangles)
-      m_triangle_n.push_back(resolution(triangle_covering_radius(mesh.points[t[0]], mesh.points[t[1]],
-                                                                 mesh.points[t[2]])));
-    for (const auto& e : mesh.edges) {
-      const auto v = mesh.points[e.v[1]] - mesh.points[e.v[0]];
-      m_edge_n.push_back(resolution(std::sqrt(dot(v, v)) / std::sqrt(2.)));
+    for (Index t = 0; t < mesh.number_of_triangles(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      m_triangle_n.push_back(resolution(triangle_covering_radius(mesh.points[tri[0]], mesh.points[tri[1]],
+                                                                 mesh.points[tri[2]]),
+                                        coarser ? coarser->m_triangle_n[t] : 1));
     }
+    for (Index e = 0; e < mesh.number_of_edges(); ++e) {
+      const auto v = mesh.points[mesh.edges[e].v[1]] - mesh.points[mesh.edges[e].v[0]];
+      m_edge_n.push_back(resolution(std::sqrt(dot(v, v)) / std::sqrt(2.), coarser ? coarser->m_edge_n[e] : 1));
+    }
+  }
+
+  /// Is s (a sample of this sampling) also a sample of `coarser` (the sampling this one was
+  /// built from)?
+  bool is_sample_of(const Sample& s, const Mesh_sampling& coarser) const
+  {
+    if (s.origin.dimension == 0) return true;
+    if (s.origin.dimension == 2) {
+      const std::int32_t m = s.denominator / coarser.m_triangle_n[s.origin.index];
+      return s.weights[0] % m == 0 && s.weights[1] % m == 0 && s.weights[2] % m == 0;
+    }
+    bool found = false; // the parameter k / den equal to one of the coarser edge parameters?
+    coarser.for_each_edge_denominator(s.origin.index, [&](std::int32_t den) {
+      found |= (std::int64_t(s.weights[1]) * den) % s.denominator == 0;
+    });
+    return found;
   }
 
   const Mesh_data& mesh() const { return *m_mesh; }
@@ -149,6 +174,15 @@ public:
 
 private:
   /// Calls f(k, den) for the distinct parameters k/den in (0, 1) of edge e (see header).
+  template <class F>
+  void for_each_edge_denominator(Index e, const F& f) const
+  {
+    const auto& edge = m_mesh->edges[e];
+    f(m_edge_n[e]);
+    if (edge.f[0] != no_index) f(m_triangle_n[edge.f[0]]);
+    if (edge.f[1] != no_index) f(m_triangle_n[edge.f[1]]);
+  }
+
   template <class F>
   void for_each_edge_parameter(Index e, const F& f) const
   {

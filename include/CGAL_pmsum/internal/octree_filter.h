@@ -1,0 +1,448 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 3a of the pipeline: the octree filter (paper section 6), complete.
+//
+// The paper floods an octree of cells of size d from seed points, so that interior regions
+// are never CD-tested; seeds for "difficult" holes (voids with no vertex + vertex point)
+// can be missing, and then a whole void shell is lost. We classify cells instead of
+// exploring from seeds: a cell is skipped only if it is CERTIFIED to lie in the interior
+// of P + Q, and every candidate of every other cell goes to the CD filter. The output is
+// the same with and without this filter, for every shell, whatever its seeds.
+//
+// Certificate. Let B(a, r) be an open ball inside P and y a point of Q. Then the open ball
+// B(a + y, r) lies in int(P) + Q, inside int(P + Q). So an axis-aligned cell with centre c
+// and half-diagonal rho is interior as soon as
+//     dist(c - a, Q) < r - rho     for some ball B(a, r) inside P,
+// or the same with P and Q exchanged. Balls inside P: points of a grid inside P with their
+// distance to the surface, thinned greedily (a discrete medial axis). Distances to Q: upper
+// bounds on a grid (0 inside Q, else the distance to the surface), with dist 1-Lipschitz:
+// dist(z, Q) <= D(g) + |z - g| for the grid point g nearest to z. Inside/outside of grid
+// points comes from exact parity along grid rows (CGAL's exact 2D orientation decides which
+// triangles a row crosses); a point too close to a crossing to trust the double crossing
+// abscissa is "unknown" and certifies nothing. Every double quantity is turned into a bound
+// with a relative margin far above its rounding error, so the certificate is sound; the
+// margins only make it certify a little less (never a wrong candidate skipped).
+//
+// Cells form an octree over the candidates' leaf cells of size h: a node is certified as a
+// whole when it can be, else its children are tried, down to the leaves.
+
+#ifndef CGAL_PMSUM_INTERNAL_OCTREE_FILTER_H
+#define CGAL_PMSUM_INTERNAL_OCTREE_FILTER_H
+
+#include <CGAL_pmsum/internal/cd_filter.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// Runs f(i) for i in [0, n), in parallel if asked and TBB is there.
+template <class F>
+void for_each_index(std::size_t n, bool parallel, const F& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if (parallel) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
+    });
+    return;
+  }
+#endif
+  for (std::size_t i = 0; i < n; ++i) f(i);
+}
+
+using Point3 = std::array<double, 3>;
+
+inline double distance3(const Point3& a, const Point3& b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/// Bounding box of the non-isolated vertices of a mesh.
+inline std::pair<Point3, Point3> mesh_box(const Mesh_data& M)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  Point3 lo = {inf, inf, inf}, hi = {-inf, -inf, -inf};
+  for (Index v = 0; v < M.number_of_vertices(); ++v) {
+    if (M.vertex_is_isolated(v)) continue;
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = (std::min)(lo[c], M.points[v][c]);
+      hi[c] = (std::max)(hi[c], M.points[v][c]);
+    }
+  }
+  return {lo, hi};
+}
+
+/// A ball inside a solid: every point at distance < r from c is in its interior.
+struct Inner_ball
+{
+  Point3 c;
+  double r;
+};
+
+/// Upper bounds of the distance to one mesh (to its solid where components are closed) from
+/// any point near a grid, and balls inside its closed components. See the file comment.
+class Distance_grid
+{
+public:
+  /// Grid over [lo, hi] with `resolution` points along the longest side. `tolerance` is an
+  /// absolute bound far above the rounding errors of the coordinates involved.
+  Distance_grid(const Mesh_data& M, const Point3& lo, const Point3& hi, int resolution, double tolerance,
+                std::size_t max_balls, bool parallel)
+    : m_lo(lo), m_tol(tolerance)
+  {
+    const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    m_s = extent / resolution;
+    if (!(m_s > 0) || (M.number_of_triangles() == 0 && M.bare_edges.empty())) return;
+    for (int c = 0; c < 3; ++c) m_n[c] = int(std::ceil((hi[c] - lo[c]) / m_s)) + 1;
+    const std::size_t N = std::size_t(m_n[0]) * m_n[1] * m_n[2];
+    m_inside.assign(N, 0);
+    m_radius.assign(N, 0);
+    m_closest.resize(N);
+
+    const std::vector<std::uint8_t> state = classify(M); // 0 outside, 1 inside, 2 unknown
+    Tree_mesh surface(M, false);
+    if (M.number_of_triangles() > 0) { // build the distance search tree before going parallel
+      surface.tree.accelerate_distance_queries();
+      surface.tree.closest_point(Epick::Point_3(lo[0], lo[1], lo[2]));
+    }
+    // More bare edges than that are ignored: distances to a subset of the mesh are upper bounds too.
+    const bool few_edges = M.bare_edges.size() <= 1024;
+    for_each_index(N, parallel, [&](std::size_t i) {
+      const Point3 g = point(i);
+      double best = std::numeric_limits<double>::infinity();
+      Point3 closest = g;
+      if (M.number_of_triangles() > 0) {
+        const Epick::Point_3 c = surface.tree.closest_point(Epick::Point_3(g[0], g[1], g[2]));
+        closest = {c.x(), c.y(), c.z()};
+        best = distance3(g, closest);
+      }
+      if (few_edges)
+        for (Index e : M.bare_edges) {
+          const Point3 c = closest_on_segment(g, M.points[M.edges[e].v[0]], M.points[M.edges[e].v[1]]);
+          if (distance3(g, c) < best) { best = distance3(g, c); closest = c; }
+        }
+      m_closest[i] = closest;
+      if (state[i] == 1) {
+        m_inside[i] = 1;
+        m_radius[i] = best * (1 - 1e-9) - m_tol;
+      }
+    });
+
+    // Balls: inside points by decreasing radius, skipping one almost inside a kept ball.
+    std::vector<std::size_t> inside;
+    for (std::size_t i = 0; i < N; ++i)
+      if (m_inside[i] && m_radius[i] > 0) inside.push_back(i);
+    std::sort(inside.begin(), inside.end(), [&](std::size_t a, std::size_t b) {
+      return m_radius[a] != m_radius[b] ? m_radius[a] > m_radius[b] : a < b;
+    });
+    for (std::size_t i : inside) {
+      if (m_balls.size() >= max_balls) break;
+      const Point3 g = point(i);
+      bool covered = false;
+      for (const Inner_ball& b : m_balls)
+        if (distance3(g, b.c) + m_radius[i] <= b.r + m_s) { covered = true; break; }
+      if (!covered) m_balls.push_back({g, m_radius[i]});
+    }
+  }
+
+  /// Is the distance from z to the mesh smaller than `bound` (surely)? Infinite outside
+  /// the grid. From a grid point g near z: the ball B(g, r) inside the mesh, or the surface
+  /// point closest to g, gives an upper bound.
+  bool closer_than(const Point3& z, double bound) const
+  {
+    if (m_closest.empty()) return false;
+    std::array<int, 3> k;
+    for (int c = 0; c < 3; ++c) {
+      const double f = std::floor((z[c] - m_lo[c]) / m_s);
+      if (!(f >= 0 && f < m_n[c] - 1)) return false;
+      k[c] = int(f);
+    }
+    // The nearest corner of z's grid cell first, then (if it may still succeed) the others.
+    int nearest = 0;
+    for (int c = 0; c < 3; ++c)
+      if (z[c] - (m_lo[c] + m_s * k[c]) > 0.5 * m_s) nearest |= 1 << c;
+    const double diagonal = std::sqrt(3.0) * m_s;
+    for (int corner = 0; corner < 8; ++corner) {
+      const int bits = corner ^ nearest;
+      const std::size_t i = index(k[0] + (bits & 1), k[1] + ((bits >> 1) & 1), k[2] + ((bits >> 2) & 1));
+      const double u = upper_distance(z, i);
+      if (u < bound) return true;
+      if (corner == 0 && u - diagonal >= bound) return false;
+    }
+    return false;
+  }
+
+  const std::vector<Inner_ball>& balls() const { return m_balls; }
+
+private:
+  std::size_t index(int i, int j, int k) const { return (std::size_t(k) * m_n[1] + j) * m_n[0] + i; }
+  Point3 point(std::size_t i) const
+  {
+    const std::size_t x = i % m_n[0], y = (i / m_n[0]) % m_n[1], z = i / (std::size_t(m_n[0]) * m_n[1]);
+    return {m_lo[0] + m_s * double(x), m_lo[1] + m_s * double(y), m_lo[2] + m_s * double(z)};
+  }
+
+  double upper_distance(const Point3& z, std::size_t i) const
+  {
+    const double to_closest = distance3(z, m_closest[i]) * (1 + 1e-9) + m_tol;
+    if (!m_inside[i]) return to_closest;
+    const double outside_ball = distance3(z, point(i)) * (1 + 1e-9) + m_tol - m_radius[i];
+    return (std::min)(to_closest, (std::max)(0.0, outside_ball));
+  }
+
+  static Point3 closest_on_segment(const Point3& p, const Point3& a, const Point3& b)
+  {
+    const Point3 u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const double uu = dot(u, u);
+    const double s = uu > 0 ? (std::min)(1.0, (std::max)(0.0, dot(w, u) / uu)) : 0.0;
+    return {a[0] + s * u[0], a[1] + s * u[1], a[2] + s * u[2]};
+  }
+
+  /// Inside (1), outside (0) or unknown (2) for every grid point: parity of the crossings of
+  /// closed triangles along each grid row parallel to the x axis.
+  std::vector<std::uint8_t> classify(const Mesh_data& M) const
+  {
+    const std::size_t N = m_inside.size();
+    std::vector<std::uint8_t> state(N, 0);
+    bool any_closed = false;
+    for (Index t = 0; t < M.number_of_triangles(); ++t) any_closed |= M.triangle_is_closed(t);
+    if (!any_closed) return state;
+    const std::size_t rows = std::size_t(m_n[1]) * m_n[2];
+    std::vector<std::vector<double>> crossings(rows);
+    std::vector<std::uint8_t> degenerate(rows, 0);
+    using P2 = Epick::Point_2;
+    for (Index t = 0; t < M.number_of_triangles(); ++t) {
+      if (!M.triangle_is_closed(t)) continue;
+      const auto& tri = M.triangles[t];
+      const Point3 &a = M.points[tri[0]], &b = M.points[tri[1]], &c = M.points[tri[2]];
+      const P2 A(a[1], a[2]), B(b[1], b[2]), C(c[1], c[2]);
+      auto range = [&](int axis) {
+        const double lo = (std::min)({a[axis], b[axis], c[axis]}), hi = (std::max)({a[axis], b[axis], c[axis]});
+        const int first = (std::max)(0, int(std::ceil((lo - m_lo[axis]) / m_s)) - 1);
+        const int last = (std::min)(m_n[axis] - 1, int(std::floor((hi - m_lo[axis]) / m_s)) + 1);
+        return std::make_pair(first, last);
+      };
+      const auto [j0, j1] = range(1);
+      const auto [k0, k1] = range(2);
+      const CGAL::Orientation whole = CGAL::orientation(A, B, C);
+      for (int k = k0; k <= k1; ++k)
+        for (int j = j0; j <= j1; ++j) {
+          const std::size_t row = std::size_t(k) * m_n[1] + j;
+          if (degenerate[row]) continue;
+          const P2 p(m_lo[1] + m_s * j, m_lo[2] + m_s * k);
+          const CGAL::Orientation o0 = CGAL::orientation(B, C, p), o1 = CGAL::orientation(C, A, p),
+                                  o2 = CGAL::orientation(A, B, p);
+          if (o0 == CGAL::COLLINEAR || o1 == CGAL::COLLINEAR || o2 == CGAL::COLLINEAR) {
+            // On the projection of an edge (or a flat triangle): exact parity is unclear here.
+            if ((o0 == CGAL::COLLINEAR || o0 == whole) && (o1 == CGAL::COLLINEAR || o1 == whole) &&
+                (o2 == CGAL::COLLINEAR || o2 == whole))
+              degenerate[row] = 1;
+            continue;
+          }
+          if (o0 != o1 || o1 != o2) continue; // the row misses the triangle
+          // The row crosses the triangle's interior: abscissa by barycentric coordinates.
+          const double wa = area2(b, c, p), wb = area2(c, a, p), wc = area2(a, b, p);
+          crossings[row].push_back((wa * a[0] + wb * b[0] + wc * c[0]) / (wa + wb + wc));
+        }
+    }
+    for (std::size_t row = 0; row < rows; ++row) {
+      const std::size_t base = row * m_n[0];
+      if (degenerate[row]) {
+        std::fill(state.begin() + base, state.begin() + base + m_n[0], 2);
+        continue;
+      }
+      auto& xs = crossings[row];
+      std::sort(xs.begin(), xs.end());
+      std::size_t passed = 0;
+      for (int i = 0; i < m_n[0]; ++i) {
+        const double x = m_lo[0] + m_s * i;
+        while (passed < xs.size() && xs[passed] < x) ++passed;
+        const bool near = (passed > 0 && x - xs[passed - 1] <= m_tol) || (passed < xs.size() && xs[passed] - x <= m_tol);
+        state[base + i] = near ? 2 : (passed % 2 == 1 ? 1 : 0);
+      }
+    }
+    return state;
+  }
+
+  static double area2(const Point3& u, const Point3& v, const Epick::Point_2& p)
+  { return (v[1] - u[1]) * (p.y() - u[2]) - (v[2] - u[2]) * (p.x() - u[1]); }
+
+  Point3 m_lo{};
+  double m_s = 0, m_tol = 0;
+  std::array<int, 3> m_n{};
+  std::vector<std::uint8_t> m_inside;  // grid point inside a closed component (exact parity)
+  std::vector<double> m_radius;        // inside: a lower bound of its distance to the surface
+  std::vector<Point3> m_closest;       // the surface point closest to it (rounded)
+  std::vector<Inner_ball> m_balls;
+};
+
+/// Certifies boxes inside int(P + Q) (file comment).
+class Interior_certificate
+{
+public:
+  /// `resolution`: grid points along the longest side of each mesh's grid.
+  Interior_certificate(const Mesh_data& P, const Mesh_data& Q, int resolution, double tolerance, bool parallel)
+  {
+    const auto bp = mesh_box(P), bq = mesh_box(Q);
+    // A ball inside X fits in X's box: its radius is at most half the box's smallest side.
+    auto max_radius = [](const std::pair<Point3, Point3>& b) {
+      return 0.5 * (std::min)({b.second[0] - b.first[0], b.second[1] - b.first[1], b.second[2] - b.first[2]});
+    };
+    auto grown = [](std::pair<Point3, Point3> b, double r) {
+      for (int c = 0; c < 3; ++c) { b.first[c] -= r; b.second[c] += r; }
+      return b;
+    };
+    const auto gp = grown(bp, max_radius(bq)), gq = grown(bq, max_radius(bp));
+    m_p.emplace(P, gp.first, gp.second, resolution, tolerance, max_balls, parallel);
+    m_q.emplace(Q, gq.first, gq.second, resolution, tolerance, max_balls, parallel);
+  }
+
+  /// Is every point within distance rho of c inside int(P + Q)?
+  bool certifies(const Point3& c, double rho) const
+  {
+    return certifies(c, rho, m_p->balls(), *m_q) || certifies(c, rho, m_q->balls(), *m_p);
+  }
+
+  bool can_certify() const { return !m_p->balls().empty() || !m_q->balls().empty(); }
+
+  /// The largest radius of a ball inside P or Q (0 if none).
+  double largest_ball() const
+  {
+    double r = 0;
+    for (const auto* g : {&*m_p, &*m_q})
+      if (!g->balls().empty()) r = (std::max)(r, g->balls().front().r);
+    return r;
+  }
+
+private:
+  static bool certifies(const Point3& c, double rho, const std::vector<Inner_ball>& balls, const Distance_grid& other)
+  {
+    for (const Inner_ball& b : balls) { // by decreasing radius
+      if (b.r <= rho) return false;
+      if (other.closer_than({c[0] - b.c[0], c[1] - b.c[1], c[2] - b.c[2]}, b.r - rho)) return true;
+    }
+    return false;
+  }
+
+  static constexpr std::size_t max_balls = 256;
+  std::optional<Distance_grid> m_p, m_q;
+};
+
+/// The candidates' leaf cells of size h and the certified ones.
+class Octree_filter
+{
+public:
+  using Key = std::uint64_t;
+
+  /// Leaf cells of size h over the box [lo, hi] of the candidates. Disabled (certifies
+  /// nothing) when h is too small for 21-bit cell coordinates or for the double accuracy.
+  Octree_filter(const Interior_certificate& cert, const Point3& lo, const Point3& hi, double h, double tolerance)
+    : m_cert(&cert), m_h(h), m_tol(tolerance)
+  {
+    for (int c = 0; c < 3; ++c) m_origin[c] = lo[c] - h;
+    double extent = 0;
+    for (int c = 0; c < 3; ++c) extent = (std::max)(extent, hi[c] - lo[c] + 2 * h);
+    m_enabled = cert.can_certify() && h > 0 && extent / h < double(1 << 20) && tolerance < 1e-3 * h;
+  }
+
+  bool enabled() const { return m_enabled; }
+
+  /// The leaf of x, unless x is within the rounding margin of a cell face (then no leaf:
+  /// the candidate is always tested).
+  std::optional<Key> leaf(const Point3& x) const
+  {
+    if (!m_enabled) return std::nullopt;
+    Key key = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double f = (x[c] - m_origin[c]) / m_h;
+      const double cell = std::floor(f);
+      const double margin = m_tol / m_h;
+      if (!(cell >= 0 && cell < double(1 << 21)) || f - cell < margin || cell + 1 - f < margin) return std::nullopt;
+      key |= Key(cell) << (21 * c);
+    }
+    return key;
+  }
+
+  /// Certifies the given leaves (sorted, unique), top-down over the octree levels.
+  void certify(std::vector<Key> alive, bool parallel)
+  {
+    m_leaves = alive.size();
+    m_certified.clear();
+    if (!m_enabled || alive.empty()) return;
+    Key all = 0;
+    for (Key k : alive) all |= k;
+    int top = 0;
+    for (int c = 0; c < 3; ++c)
+      while ((((all >> (21 * c)) & mask) >> top) != 0) ++top;
+    for (int level = top; level >= 0 && !alive.empty(); --level) {
+      std::vector<Key> nodes(alive.size());
+      for (std::size_t i = 0; i < alive.size(); ++i) nodes[i] = node(alive[i], level);
+      std::vector<Key> unique = nodes;
+      std::sort(unique.begin(), unique.end());
+      unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+      std::vector<std::uint8_t> ok(unique.size(), 0);
+      const double size = m_h * double(Key(1) << level);
+      // The candidates of a leaf are in it up to the leaf margin; centres are rounded.
+      const double rho = 0.5 * std::sqrt(3.0) * (size + 2 * m_tol) * (1 + 1e-9) + m_tol;
+      for_each_index(unique.size(), parallel, [&](std::size_t i) {
+        Point3 c;
+        for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double((unique[i] >> (21 * a)) & mask) + 0.5);
+        ok[i] = m_cert->certifies(c, rho);
+      });
+      std::vector<Key> next;
+      for (std::size_t i = 0; i < alive.size(); ++i) {
+        const std::size_t u = std::lower_bound(unique.begin(), unique.end(), nodes[i]) - unique.begin();
+        (ok[u] ? m_certified : next).push_back(alive[i]);
+      }
+      alive.swap(next);
+    }
+    std::sort(m_certified.begin(), m_certified.end());
+  }
+
+  bool certified(const Point3& x) const
+  {
+    const std::optional<Key> k = leaf(x);
+    return k && std::binary_search(m_certified.begin(), m_certified.end(), *k);
+  }
+
+  std::size_t number_of_leaves() const { return m_leaves; }
+  std::size_t number_of_certified_leaves() const { return m_certified.size(); }
+
+private:
+  static constexpr Key mask = (Key(1) << 21) - 1;
+  static Key node(Key leaf, int level)
+  {
+    Key n = 0;
+    for (int c = 0; c < 3; ++c) n |= (((leaf >> (21 * c)) & mask) >> level) << (21 * c);
+    return n;
+  }
+
+  const Interior_certificate* m_cert;
+  Point3 m_origin{};
+  double m_h, m_tol;
+  bool m_enabled = false;
+  std::vector<Key> m_certified;
+  std::size_t m_leaves = 0;
+};
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_OCTREE_FILTER_H
