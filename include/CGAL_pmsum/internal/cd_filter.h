@@ -157,9 +157,11 @@ public:
 
   const Cd_statistics& statistics() const { return m_stats; }
 
-  /// Did the last query, answered "not free", decide without looking at the perturbation
-  /// (every predicate of the test that found the crossing or containment was non-zero at x
-  /// itself)? Then that test, hence the answer, is the same for any direction.
+  /// Did the last query, answered "not free", decide without looking at the perturbation?
+  /// True iff some pair of items crosses with every predicate of its test non-zero at x
+  /// itself, or, if no pair crosses, the containment test that decided was so: then that
+  /// test, hence the answer, is the same for any direction. This depends on x only, not on
+  /// the order of the tests, so the number of queries does not depend on the threads.
   bool decided_without_perturbation() const { return !m_perturbed; }
 
   /// Is x = p + q, perturbed along directions[first] (then the other directions of the
@@ -167,10 +169,6 @@ public:
   bool is_free(const Sample& p, const Sample& q, const Direction* directions, std::uint32_t count,
                std::uint32_t first)
   {
-    // The crossing remembered from the last query is tried first; it is forgotten when the
-    // feature pair (whose directions are `directions`) changes, so that the work, hence the
-    // counters, does not depend on how the pairs are spread over threads.
-    if (directions != m_hit_key) { m_hit.reset(); m_hit_key = directions; }
     set_query(p, q, directions, count, first);
     return configuration_is_free();
   }
@@ -244,16 +242,16 @@ private:
     return *m_exact_x;
   }
 
+  /// Box b translated by the interval of x, rounded outward. Each bound is computed to
+  /// nearest, s = fl(b + x), then moved out by |s| 2^-52, at least one unit in the last place
+  /// of s: the exact sum is within half a unit of s and rounding is monotone, so the moved
+  /// bound is still beyond it (a sum that rounds to zero or a subnormal is exact).
   CGAL::Bbox_3 translated_box(const CGAL::Bbox_3& b) const
   {
-    return CGAL::Bbox_3(b.xmin() + m_x[0].inf(), b.ymin() + m_x[1].inf(), b.zmin() + m_x[2].inf(),
-                        b.xmax() + m_x[0].sup(), b.ymax() + m_x[1].sup(), b.zmax() + m_x[2].sup())
-           + CGAL::Bbox_3(std::nextafter(b.xmin() + m_x[0].inf(), -HUGE_VAL),
-                          std::nextafter(b.ymin() + m_x[1].inf(), -HUGE_VAL),
-                          std::nextafter(b.zmin() + m_x[2].inf(), -HUGE_VAL),
-                          std::nextafter(b.xmax() + m_x[0].sup(), HUGE_VAL),
-                          std::nextafter(b.ymax() + m_x[1].sup(), HUGE_VAL),
-                          std::nextafter(b.zmax() + m_x[2].sup(), HUGE_VAL));
+    auto down = [](double s) { return s - std::abs(s) * 0x1p-52; };
+    auto up = [](double s) { return s + std::abs(s) * 0x1p-52; };
+    return CGAL::Bbox_3(down(b.xmin() + m_x[0].inf()), down(b.ymin() + m_x[1].inf()), down(b.zmin() + m_x[2].inf()),
+                        up(b.xmax() + m_x[0].sup()), up(b.ymax() + m_x[1].sup()), up(b.zmax() + m_x[2].sup()));
   }
 
   // ----- perturbed orientation ---------------------------------------------------------
@@ -329,18 +327,31 @@ private:
   /// whose boxes overlap in the same way is tested exactly. Node boxes contain their items'
   /// boxes and translated_box is monotone, so no pair whose items could cross is skipped:
   /// the answer is the same as testing every pair (it is an existence test; the order only
-  /// changes which crossing is found and how many pairs are tested). The crossing found by
-  /// the previous query of the same feature pair is tried first: consecutive candidates are
-  /// close, and most inner candidates are stopped by it at once.
+  /// changes which crossing is found and how many pairs are tested). The last crossing
+  /// found by this filter is tried first: consecutive candidates are close, and many inner
+  /// ones cross there too (so triangle_pairs depends on how the work is spread over threads).
+  /// A crossing whose test looked at the perturbation does not stop the search, unless x is
+  /// already known to have no other kind: see decided_without_perturbation().
   bool surfaces_cross()
   {
     const Bvh& mt = m_moving.items;
     const Bvh& st = m_static.items;
     if (mt.empty() || st.empty()) return false;
-    if (m_hit) {
-      if (CGAL::do_overlap(translated_box(moving_box(m_hit->first)), static_box(m_hit->second)) &&
-          items_cross(m_hit->first, m_hit->second))
-        return true;
+    // x has no crossing decided at x itself (found by the previous query, on the same samples).
+    const bool only_perturbed = m_sp && m_only_perturbed && same(m_only_perturbed->first, *m_sp) &&
+                                same(m_only_perturbed->second, *m_sq);
+    bool found = false; // a crossing that looked at the perturbation
+    auto stop = [&](Index u, Index v) {
+      if (!items_cross(u, v)) return false;
+      m_hit.emplace(u, v);
+      if (!m_perturbed || only_perturbed) return true;
+      found = true;
+      return false;
+    };
+    std::optional<std::pair<Index, Index>> tried;
+    if (m_hit && CGAL::do_overlap(translated_box(moving_box(m_hit->first)), static_box(m_hit->second))) {
+      tried = m_hit;
+      if (stop(tried->first, tried->second)) return true;
     }
     m_stack.clear();
     if (CGAL::do_overlap(translated_box(mt.root().box), st.root().box)) m_stack.emplace_back(0, 0);
@@ -356,11 +367,8 @@ private:
           for (std::uint32_t j = nb.first; j < nb.first + nb.count; ++j) {
             const Index v = st.item(j);
             if (!CGAL::do_overlap(box, st.item_box(j))) continue;
-            if (m_hit && m_hit->first == u && m_hit->second == v) continue; // tried first
-            if (items_cross(u, v)) {
-              m_hit.emplace(u, v);
-              return true;
-            }
+            if (tried && tried->first == u && tried->second == v) continue; // tried first
+            if (stop(u, v)) return true;
           }
         }
         continue;
@@ -376,8 +384,15 @@ private:
           if (CGAL::do_overlap(translated_box(mt.node(c).box), nb.box)) m_stack.emplace_back(c, b);
       }
     }
-    return false;
+    if (found) {
+      m_perturbed = true;
+      if (m_sp) m_only_perturbed.emplace(*m_sp, *m_sq);
+    }
+    return found;
   }
+
+  static bool same(const Sample& a, const Sample& b)
+  { return a.vertices == b.vertices && a.weights == b.weights && a.denominator == b.denominator; }
 
   /// Boxes of items, untranslated.
   CGAL::Bbox_3 moving_box(Index u) const
@@ -560,8 +575,8 @@ private:
   double m_margin;
   Cd_statistics m_stats;
   bool m_perturbed = false; // the test that decided the current query looked at the perturbation
-  std::optional<std::pair<Index, Index>> m_hit; // last crossing (moving item, static item)
-  const Direction* m_hit_key = nullptr;          // the feature pair it was found for
+  std::optional<std::pair<Index, Index>> m_hit;            // last crossing (moving item, static item)
+  std::optional<std::pair<Sample, Sample>> m_only_perturbed; // an x whose crossings all look at the perturbation
   std::vector<std::pair<std::uint32_t, std::uint32_t>> m_stack; // traversal (moving node, static node)
 
   // query
