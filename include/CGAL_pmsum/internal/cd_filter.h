@@ -13,10 +13,12 @@
 // chain spans R^3, no evaluated predicate is zero: the configuration is generic and
 //   disjoint  <=>  no edge of one mesh crosses a triangle of the other, and no connected
 //                  component of one mesh lies inside a closed component of the other.
-// The first condition is tested triangle pair by triangle pair, with a CGAL AABB tree of
-// the mesh with more triangles ("static", not translated) and the triangles of the other
-// ("moving", reflected and translated by t) as box queries. The second is a ray-parity
-// point-in-solid test from one vertex of each component, also with an AABB tree.
+// The first condition is tested pair by pair (triangle-triangle, bare edge-triangle), by a
+// simultaneous traversal of two bounding-volume hierarchies (bvh.h): one of the mesh with
+// more triangles ("static", not translated), one of the other ("moving", reflected; its
+// boxes translated by the interval of x and rounded outward). Only pairs whose boxes
+// overlap are tested exactly; the last crossing found is tried first. The second is a
+// ray-parity point-in-solid test from one vertex of each component, with a CGAL AABB tree.
 // Meshes with borders bound no volume: only their surface counts.
 //
 // Scaling: x has denominator S = den_p den_q. Exact evaluations multiply every position by S
