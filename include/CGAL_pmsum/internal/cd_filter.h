@@ -13,10 +13,12 @@
 // chain spans R^3, no evaluated predicate is zero: the configuration is generic and
 //   disjoint  <=>  no edge of one mesh crosses a triangle of the other, and no connected
 //                  component of one mesh lies inside a closed component of the other.
-// The first condition is tested triangle pair by triangle pair, with a CGAL AABB tree of
-// the mesh with more triangles ("static", not translated) and the triangles of the other
-// ("moving", reflected and translated by t) as box queries. The second is a ray-parity
-// point-in-solid test from one vertex of each component, also with an AABB tree.
+// The first condition is tested pair by pair (triangle-triangle, bare edge-triangle), by a
+// simultaneous traversal of two bounding-volume hierarchies (bvh.h): one of the mesh with
+// more triangles ("static", not translated), one of the other ("moving", reflected; its
+// boxes translated by the interval of x and rounded outward). Only pairs whose boxes
+// overlap are tested exactly; the last crossing found is tried first. The second is a
+// ray-parity point-in-solid test from one vertex of each component, with a CGAL AABB tree.
 // Meshes with borders bound no volume: only their surface counts.
 //
 // Scaling: x has denominator S = den_p den_q. Exact evaluations multiply every position by S
@@ -26,6 +28,7 @@
 #ifndef CGAL_PMSUM_INTERNAL_CD_FILTER_H
 #define CGAL_PMSUM_INTERNAL_CD_FILTER_H
 
+#include <CGAL_pmsum/internal/bvh.h>
 #include <CGAL_pmsum/internal/normal_filter.h>
 
 #include <CGAL/AABB_traits.h>
@@ -63,13 +66,16 @@ private:
 
 using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Triangle_primitive>>;
 
-/// A mesh with its AABB tree, in a given frame (its coordinates, or their negation).
+/// A mesh with its trees, in a given frame (its coordinates, or their negation).
 struct Tree_mesh
 {
   const Mesh_data* mesh;
   std::vector<std::array<double, 3>> base; // coordinates in this frame
   std::vector<std::pair<Index, Epick::Triangle_3>> triangles;
-  Triangle_tree tree;
+  Triangle_tree tree;                      // triangles, for the rays of point-in-solid tests
+  // Hierarchy of the triangles and bare edges, for surface crossings: item i < number of
+  // triangles is triangle i, item number_of_triangles() + k is bare edge bare_edges[k].
+  Bvh items;
   CGAL::Bbox_3 closed_box;                 // bounding box of the closed components
   bool has_closed = false;
   // Ray direction of the point-in-solid test. Any direction works: a triangle parallel to
@@ -89,10 +95,18 @@ struct Tree_mesh
         has_closed = true;
       }
     }
+    std::vector<CGAL::Bbox_3> boxes;
+    for (const auto& t : triangles) boxes.push_back(t.second.bbox());
+    for (Index e : m.bare_edges) boxes.push_back(edge_box(e));
+    items = Bvh(boxes);
     if (triangles.empty()) return; // a polyline: bare edges only
     tree.insert(triangles.cbegin(), triangles.cend());
     tree.build();
   }
+
+  /// Is item i (of `items`) a bare edge? Then it is edge bare_edges[i - number of triangles].
+  bool is_edge(Index i) const { return i >= triangles.size(); }
+  Index edge(Index i) const { return mesh->bare_edges[i - triangles.size()]; }
 
   /// Bounding box of the segment of edge e, in this frame.
   CGAL::Bbox_3 edge_box(Index e) const
@@ -145,8 +159,11 @@ public:
 
   const Cd_statistics& statistics() const { return m_stats; }
 
-  /// Did the last query decide without looking at the perturbation (every predicate it
-  /// evaluated was non-zero at x itself)? Then its answer is the same for any direction.
+  /// Did the last query, answered "not free", decide without looking at the perturbation?
+  /// True iff some pair of items crosses with every predicate of its test non-zero at x
+  /// itself, or, if no pair crosses, the containment test that decided was so: then that
+  /// test, hence the answer, is the same for any direction. This depends on x only, not on
+  /// the order of the tests, so the number of queries does not depend on the threads.
   bool decided_without_perturbation() const { return !m_perturbed; }
 
   /// Is x = p + q, perturbed along directions[first] (then the other directions of the
@@ -174,50 +191,10 @@ private:
   bool configuration_is_free()
   {
     ++m_stats.queries;
-    m_perturbed = false;
-    // 1. Does a triangle (or bare edge) of the moving mesh cross a triangle of the static
-    //    mesh? (The static mesh has at least as many triangles; bare edges of the static
-    //    mesh are tested against the moving triangles by brute force.)
-    const Mesh_data& M = *m_moving.mesh;
-    if (m_static.mesh->number_of_triangles() > 0) {
-      for (Index t = 0; t < M.number_of_triangles(); ++t) {
-        CGAL::Bbox_3 box = translated_box(m_moving.triangles[t].second.bbox());
-        if (!CGAL::do_overlap(box, m_static.tree.bbox())) continue;
-        bool hit = false;
-        Box_traversal traversal{box, [&](Index s) {
-                                  ++m_stats.triangle_pairs;
-                                  return hit = triangles_cross(t, s);
-                                }};
-        m_static.tree.traversal(box, traversal);
-        if (hit) return false;
-      }
-      for (Index e : M.bare_edges) {
-        CGAL::Bbox_3 box = translated_box(m_moving.edge_box(e));
-        if (!CGAL::do_overlap(box, m_static.tree.bbox())) continue;
-        bool hit = false;
-        const auto& ev = M.edges[e].v;
-        const std::array<Moving_point, 2> seg = {Moving_point{&m_moving.base[ev[0]], 1}, Moving_point{&m_moving.base[ev[1]], 1}};
-        Box_traversal traversal{box, [&](Index s) {
-                                  ++m_stats.triangle_pairs;
-                                  return hit = segment_crosses(seg, static_triangle(s));
-                                }};
-        m_static.tree.traversal(box, traversal);
-        if (hit) return false;
-      }
-    }
-    for (Index e : m_static.mesh->bare_edges) {
-      const auto& ev = m_static.mesh->edges[e].v;
-      const std::array<Moving_point, 2> seg = {Moving_point{&m_static.base[ev[0]], 0}, Moving_point{&m_static.base[ev[1]], 0}};
-      for (Index t = 0; t < M.number_of_triangles(); ++t) {
-        const auto& tm = M.triangles[t];
-        ++m_stats.triangle_pairs;
-        if (segment_crosses(seg, {Moving_point{&m_moving.base[tm[0]], 1}, Moving_point{&m_moving.base[tm[1]], 1},
-                                  Moving_point{&m_moving.base[tm[2]], 1}}))
-          return false;
-      }
-    }
+    // 1. Does a triangle or bare edge of one mesh cross a triangle of the other?
+    if (surfaces_cross()) return false;
     // 2. Is a component of one mesh inside a closed component of the other?
-    for (const auto& c : M.components) {
+    for (const auto& c : m_moving.mesh->components) {
       const auto& r = m_moving.base[c.representative_vertex];
       if (inside(m_static, r, +1)) return false;
     }
@@ -267,16 +244,16 @@ private:
     return *m_exact_x;
   }
 
+  /// Box b translated by the interval of x, rounded outward. Each bound is computed to
+  /// nearest, s = fl(b + x), then moved out by |s| 2^-52, at least one unit in the last place
+  /// of s: the exact sum is within half a unit of s and rounding is monotone, so the moved
+  /// bound is still beyond it (a sum that rounds to zero or a subnormal is exact).
   CGAL::Bbox_3 translated_box(const CGAL::Bbox_3& b) const
   {
-    return CGAL::Bbox_3(b.xmin() + m_x[0].inf(), b.ymin() + m_x[1].inf(), b.zmin() + m_x[2].inf(),
-                        b.xmax() + m_x[0].sup(), b.ymax() + m_x[1].sup(), b.zmax() + m_x[2].sup())
-           + CGAL::Bbox_3(std::nextafter(b.xmin() + m_x[0].inf(), -HUGE_VAL),
-                          std::nextafter(b.ymin() + m_x[1].inf(), -HUGE_VAL),
-                          std::nextafter(b.zmin() + m_x[2].inf(), -HUGE_VAL),
-                          std::nextafter(b.xmax() + m_x[0].sup(), HUGE_VAL),
-                          std::nextafter(b.ymax() + m_x[1].sup(), HUGE_VAL),
-                          std::nextafter(b.zmax() + m_x[2].sup(), HUGE_VAL));
+    auto down = [](double s) { return s - std::abs(s) * 0x1p-52; };
+    auto up = [](double s) { return s + std::abs(s) * 0x1p-52; };
+    return CGAL::Bbox_3(down(b.xmin() + m_x[0].inf()), down(b.ymin() + m_x[1].inf()), down(b.zmin() + m_x[2].inf()),
+                        up(b.xmax() + m_x[0].sup()), up(b.ymax() + m_x[1].sup()), up(b.zmax() + m_x[2].sup()));
   }
 
   // ----- perturbed orientation ---------------------------------------------------------
@@ -345,6 +322,108 @@ private:
   }
 
   // ----- surface crossing --------------------------------------------------------------
+  /// Does an item (triangle or bare edge) of the moving mesh, translated, cross an item of
+  /// the static mesh? Simultaneous traversal of both hierarchies: a pair of nodes is split
+  /// only if the moving node's box, translated by the interval of x and rounded outward
+  /// (translated_box), overlaps the static node's box; at the leaves, each pair of items
+  /// whose boxes overlap in the same way is tested exactly. Node boxes contain their items'
+  /// boxes and translated_box is monotone, so no pair whose items could cross is skipped:
+  /// the answer is the same as testing every pair (it is an existence test; the order only
+  /// changes which crossing is found and how many pairs are tested). The last crossing
+  /// found by this filter is tried first: consecutive candidates are close, and many inner
+  /// ones cross there too (so triangle_pairs depends on how the work is spread over threads).
+  /// A crossing whose test looked at the perturbation does not stop the search, unless x is
+  /// already known to have no other kind: see decided_without_perturbation().
+  bool surfaces_cross()
+  {
+    const Bvh& mt = m_moving.items;
+    const Bvh& st = m_static.items;
+    if (mt.empty() || st.empty()) return false;
+    // x has no crossing decided at x itself (found by the previous query, on the same samples).
+    const bool only_perturbed = m_sp && m_only_perturbed && same(m_only_perturbed->first, *m_sp) &&
+                                same(m_only_perturbed->second, *m_sq);
+    bool found = false; // a crossing that looked at the perturbation
+    auto stop = [&](Index u, Index v) {
+      if (!items_cross(u, v)) return false;
+      m_hit.emplace(u, v);
+      if (!m_perturbed || only_perturbed) return true;
+      found = true;
+      return false;
+    };
+    std::optional<std::pair<Index, Index>> tried;
+    if (m_hit && CGAL::do_overlap(translated_box(moving_box(m_hit->first)), static_box(m_hit->second))) {
+      tried = m_hit;
+      if (stop(tried->first, tried->second)) return true;
+    }
+    m_stack.clear();
+    if (CGAL::do_overlap(translated_box(mt.root().box), st.root().box)) m_stack.emplace_back(0, 0);
+    while (!m_stack.empty()) {
+      const auto [a, b] = m_stack.back();
+      m_stack.pop_back();
+      const Bvh::Node& na = mt.node(a);
+      const Bvh::Node& nb = st.node(b);
+      if (na.is_leaf() && nb.is_leaf()) {
+        for (std::uint32_t i = na.first; i < na.first + na.count; ++i) {
+          const Index u = mt.item(i);
+          const CGAL::Bbox_3 box = translated_box(mt.item_box(i));
+          for (std::uint32_t j = nb.first; j < nb.first + nb.count; ++j) {
+            const Index v = st.item(j);
+            if (!CGAL::do_overlap(box, st.item_box(j))) continue;
+            if (tried && tried->first == u && tried->second == v) continue; // tried first
+            if (stop(u, v)) return true;
+          }
+        }
+        continue;
+      }
+      // Split the static node if the moving one is a leaf or smaller, else the moving one.
+      auto size = [](const CGAL::Bbox_3& x) { return x.x_span() + x.y_span() + x.z_span(); };
+      if (na.is_leaf() || (!nb.is_leaf() && size(nb.box) >= size(na.box))) {
+        const CGAL::Bbox_3 box = translated_box(na.box);
+        for (std::uint32_t c : {b + 1, nb.right})
+          if (CGAL::do_overlap(box, st.node(c).box)) m_stack.emplace_back(a, c);
+      } else {
+        for (std::uint32_t c : {a + 1, na.right})
+          if (CGAL::do_overlap(translated_box(mt.node(c).box), nb.box)) m_stack.emplace_back(c, b);
+      }
+    }
+    if (found) {
+      m_perturbed = true;
+      if (m_sp) m_only_perturbed.emplace(*m_sp, *m_sq);
+    }
+    return found;
+  }
+
+  static bool same(const Sample& a, const Sample& b)
+  { return a.vertices == b.vertices && a.weights == b.weights && a.denominator == b.denominator; }
+
+  /// Boxes of items, untranslated.
+  CGAL::Bbox_3 moving_box(Index u) const
+  { return m_moving.is_edge(u) ? m_moving.edge_box(m_moving.edge(u)) : m_moving.triangles[u].second.bbox(); }
+  CGAL::Bbox_3 static_box(Index v) const
+  { return m_static.is_edge(v) ? m_static.edge_box(m_static.edge(v)) : m_static.triangles[v].second.bbox(); }
+
+  /// Does item u of the moving mesh (translated) cross item v of the static mesh? Two bare
+  /// edges never do (in the generic configuration). Counts the exact test, and leaves
+  /// m_perturbed telling whether this test looked at the perturbation.
+  bool items_cross(Index u, Index v)
+  {
+    const bool eu = m_moving.is_edge(u), ev = m_static.is_edge(v);
+    if (eu && ev) return false;
+    ++m_stats.triangle_pairs;
+    m_perturbed = false;
+    if (!eu && !ev) return triangles_cross(u, v);
+    if (eu) {
+      const auto& e = m_moving.mesh->edges[m_moving.edge(u)].v;
+      return segment_crosses({Moving_point{&m_moving.base[e[0]], 1}, Moving_point{&m_moving.base[e[1]], 1}},
+                             static_triangle(v));
+    }
+    const auto& e = m_static.mesh->edges[m_static.edge(v)].v;
+    const auto& tm = m_moving.mesh->triangles[u];
+    return segment_crosses({Moving_point{&m_static.base[e[0]], 0}, Moving_point{&m_static.base[e[1]], 0}},
+                           {Moving_point{&m_moving.base[tm[0]], 1}, Moving_point{&m_moving.base[tm[1]], 1},
+                            Moving_point{&m_moving.base[tm[2]], 1}});
+  }
+
   /// Does triangle t of the moving mesh (translated) cross triangle s of the static mesh?
   bool triangles_cross(Index t, Index s)
   {
@@ -400,6 +479,7 @@ private:
   bool inside(const Tree_mesh& solid, const std::array<double, 3>& base, int shift)
   {
     if (!solid.has_closed) return false;
+    m_perturbed = false; // see decided_without_perturbation()
     // Conservative box of z.
     std::array<double, 3> lo, hi;
     {
@@ -463,22 +543,7 @@ private:
     return true;
   }
 
-  // ----- AABB traversals ---------------------------------------------------------------
-  template <class F>
-  struct Box_traversal
-  {
-    CGAL::Bbox_3 box;
-    F on_primitive; // returns true to stop
-    bool stop = false;
-    bool go_further() const { return !stop; }
-    template <class Query, class Primitive>
-    void intersection(const Query&, const Primitive& p)
-    { if (CGAL::do_overlap(box, p.datum().bbox())) stop = on_primitive(p.id()); }
-    template <class Query, class Node>
-    bool do_intersect(const Query&, const Node& node) const { return CGAL::do_overlap(box, node.bbox()); }
-  };
-  template <class F> Box_traversal(CGAL::Bbox_3, F) -> Box_traversal<F>;
-
+  // ----- AABB traversal (rays) --------------------------------------------------------
   template <class F>
   struct Ray_traversal
   {
@@ -511,7 +576,10 @@ private:
   const Tree_mesh& m_moving;
   double m_margin;
   Cd_statistics m_stats;
-  bool m_perturbed = false; // the current query looked at the perturbation
+  bool m_perturbed = false; // the test that decided the current query looked at the perturbation
+  std::optional<std::pair<Index, Index>> m_hit;            // last crossing (moving item, static item)
+  std::optional<std::pair<Sample, Sample>> m_only_perturbed; // an x whose crossings all look at the perturbation
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> m_stack; // traversal (moving node, static node)
 
   // query
   const Sample* m_sp = nullptr; // the candidate x = p + q, or
