@@ -4,8 +4,11 @@
     benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters multiresolution threads peers pd]
 
 Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
-  filters          time and CD queries: CD only, CD + normal (CD + normal + octree: not built yet)
-  multiresolution  d = 5%, 1%, 0.5%, 0.1% of the diagonal: points and seconds
+  filters          time and CD queries: CD only, CD + normal, CD + normal + octree
+  octree           the octree filter at 1-2%: certified candidates, CD queries saved, same output
+  multiresolution  d = 5%, 1%, 0.5%, 0.1% of the diagonal: points and seconds, each d alone and
+                   coarse to fine (pmsum sum --levels)
+  goals            knot1 + knot2 and armadillo + sphere at 0.5% (CGAL demo data)
   threads          1 and 2 threads (and more where the machine has them): seconds and speedup
   peers            CGAL Nef minkowski_sum_3 (where it finishes in 10 minutes) and Manifold's
                    minkowskiSum (npm manifold-3d, installed here with npm), as ratios
@@ -14,6 +17,7 @@ Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
 Needs Debian's python3-matplotlib; the peers need node and npm.
 """
 import argparse
+import hashlib
 import json
 import os
 import subprocess
@@ -43,7 +47,12 @@ PAIRS = {
     "difficult-void": ("plates", "cube-small", []),
     "frame+knot": ("frame", "knot", []),
     "open-cube+ellipsoid": ("open-cube", "ellipsoid", []),
+    # CGAL demo data (libcgal-demo's data.tar.gz), for the goals of issue 4
+    "knot1+knot2": ("cgal:knot1.off", "cgal:knot2.off", []),
+    "armadillo+sphere": ("cgal:armadillo.off", "cgal:sphere.off", ["--scale-q", "8"]),
 }
+CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
+PEER_PAIRS = [p for p in PAIRS if not PAIRS[p][0].startswith("cgal:")]
 
 
 class Runner:
@@ -54,6 +63,15 @@ class Runner:
     def path(self, spec):
         if spec.startswith("data:"):
             return os.path.join(DATA, spec[5:])
+        if spec.startswith("cgal:"):
+            p = os.path.join(self.work, spec[5:])
+            if not os.path.exists(p):
+                import tarfile
+                with tarfile.open(CGAL_DATA) as t:
+                    member = t.getmember("data/meshes/" + spec[5:])
+                    with open(p, "wb") as f:
+                        f.write(t.extractfile(member).read())
+            return p
         p = os.path.join(self.work, spec + ".off")
         if not os.path.exists(p):
             subprocess.run([self.pmsum, "generate", spec, "-o", p], check=True)
@@ -68,7 +86,10 @@ class Runner:
             subprocess.run(cmd, check=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return None
-        return json.load(open(js))
+        r = json.load(open(js))
+        with open(os.path.join(self.work, "out.ply"), "rb") as f:
+            r["sha256"] = hashlib.sha256(f.read()).hexdigest()
+        return r
 
 
 def write(name, header, rows, note=""):
@@ -85,61 +106,129 @@ def fmt(x, digits=3):
 
 def bench_filters(run):
     d = 0.05  # "CD only" tests every sample pair: m * n queries
-    rows, labels, t_cd, t_n, q_cd, q_n = [], [], [], [], [], []
+    rows, labels, series = [], [], {"CD": ([], []), "CD + normal": ([], []), "CD + normal + octree": ([], [])}
     for pair in ["l-shape+tetrahedron", "cross+star", "hooks", "blocks+cube", "difficult-void", "frame+knot",
                  "knot1+tetrahedron", "elephant+octahedron"]:
         print("filters:", pair, flush=True)
-        n = run.sum(pair, d)
-        c = run.sum(pair, d, ["--no-normal-filter"], timeout=600)
-        rows.append([pair, n["p"]["samples"], n["q"]["samples"], n["output_points"],
+        o = run.sum(pair, d)
+        n = run.sum(pair, d, ["--no-octree-filter"])
+        c = run.sum(pair, d, ["--no-normal-filter", "--no-octree-filter"], timeout=600)
+        rows.append([pair, o["p"]["samples"], o["q"]["samples"], o["output_points"],
                      fmt(c and c["seconds"]["total"]), c and c["cd_queries"] or "timeout",
-                     fmt(n["seconds"]["total"]), n["cd_queries"], "not built",
-                     fmt(c and c["seconds"]["total"] / n["seconds"]["total"])])
+                     fmt(n["seconds"]["total"]), n["cd_queries"], fmt(o["seconds"]["total"]), o["cd_queries"],
+                     o["candidates_certified"], fmt(c and c["seconds"]["total"] / o["seconds"]["total"])])
         labels.append(pair)
-        t_cd.append(c and c["seconds"]["total"] or float("nan"))
-        t_n.append(n["seconds"]["total"])
-        q_cd.append(c and c["cd_queries"] or float("nan"))
-        q_n.append(n["cd_queries"])
+        for name, r in [("CD", c), ("CD + normal", n), ("CD + normal + octree", o)]:
+            series[name][0].append(r and r["seconds"]["total"] or float("nan"))
+            series[name][1].append(r and r["cd_queries"] or float("nan"))
     write("filters", ["pair", "samples P", "samples Q", "points", "CD only s", "CD only queries", "CD+normal s",
-                      "CD+normal queries", "CD+normal+octree", "speedup of the normal filter"], rows,
-          f"Paper Fig. 5. d = {d} of the diagonal, one thread. The octree filter (issue 4) is not built yet.")
+                      "CD+normal queries", "CD+normal+octree s", "CD+normal+octree queries", "certified (skipped)",
+                      "speedup of all filters"], rows,
+          f"Paper Fig. 5. d = {d} of the diagonal, one thread. The output is the same with and without the "
+          "octree filter; at this coarse d it has few cells to certify (see octree.md at 1%).")
     fig, ax = plt.subplots(1, 2, figsize=(12, 4.5))
     x = range(len(labels))
-    for a, (y1, y2, title) in zip(ax, [(t_cd, t_n, "seconds"), (q_cd, q_n, "CD queries")]):
-        a.bar([i - 0.2 for i in x], y1, 0.4, label="CD")
-        a.bar([i + 0.2 for i in x], y2, 0.4, label="CD + normal")
+    for k, (a, title) in enumerate(zip(ax, ["seconds", "CD queries"])):
+        for j, (name, ys) in enumerate(series.items()):
+            a.bar([i + (j - 1) * 0.27 for i in x], ys[k], 0.27, label=name)
         a.set_yscale("log")
         a.set_title(title)
         a.set_xticks(list(x))
         a.set_xticklabels(labels, rotation=40, ha="right", fontsize=8)
-        a.legend()
+        a.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "filters.png"))
 
 
+def bench_octree(run):
+    """The octree filter at d = 1% and 2 threads: candidates certified interior, CD queries saved."""
+    rows, labels, ratio = [], [], []
+    for pair, d in [("hooks", 0.02), ("blocks+cube", 0.01), ("difficult-void", 0.01), ("frame+knot", 0.01),
+                    ("cross+star", 0.01), ("knot1+tetrahedron", 0.01), ("elephant+octahedron", 0.01),
+                    ("knot1+knot2", 0.02)]:
+        print("octree:", pair, flush=True)
+        o = run.sum(pair, d, threads=2)
+        n = run.sum(pair, d, ["--no-octree-filter"], threads=2)
+        same = o["sha256"] == n["sha256"]
+        rows.append([pair, d, o["output_points"], o["candidates"], o["candidates_certified"],
+                     f"{100 * o['candidates_certified'] / max(1, o['candidates']):.0f}%", n["cd_queries"],
+                     o["cd_queries"], fmt(o["cd_queries"] / max(1, o["output_points"])), fmt(n["seconds"]["total"]),
+                     fmt(o["seconds"]["total"]), fmt(o["seconds"]["octree_filter"]), "yes" if same else "NO"])
+        labels.append(pair)
+        ratio.append((n["cd_queries"] / max(1, o["output_points"]), o["cd_queries"] / max(1, o["output_points"])))
+    write("octree", ["pair", "d", "points", "candidates", "certified", "certified %", "CD queries without",
+                     "CD queries with", "CD queries / point", "s without", "s with", "octree s", "same output"], rows,
+          "The octree filter (complete: cells certified interior are skipped, all others tested; holes need no "
+          "seeds), 2 threads, d as a fraction of the diagonal.")
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    x = range(len(labels))
+    ax.bar([i - 0.2 for i in x], [r[0] for r in ratio], 0.4, label="without octree")
+    ax.bar([i + 0.2 for i in x], [r[1] for r in ratio], 0.4, label="with octree")
+    ax.axhline(2, color="k", ls=":", label="goal: 2 CD queries per point")
+    ax.set_yscale("log")
+    ax.set_ylabel("CD queries per output point")
+    ax.set_xticks(list(x))
+    ax.set_xticklabels(labels, rotation=40, ha="right", fontsize=8)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "octree.png"))
+
+
 def bench_multiresolution(run):
+    ds = [0.05, 0.01, 0.005, 0.001]
+    threads = os.cpu_count() or 1
     rows, series = [], {}
     for pair in ["knot1+tetrahedron", "elephant+octahedron"]:
-        for d in [0.05, 0.01, 0.005, 0.001]:
+        single = []
+        for d in ds:
             print("multiresolution:", pair, d, flush=True)
-            r = run.sum(pair, d, threads=os.cpu_count() or 1)
-            if r is None:
-                rows.append([pair, d, "timeout", "", "", ""])
-                continue
-            rows.append([pair, d, r["output_points"], r["candidates"], r["cd_queries"], fmt(r["seconds"]["total"])])
-            series.setdefault(pair, []).append((d, r["seconds"]["total"], r["output_points"]))
-    write("multiresolution", ["pair", "d / diagonal", "points", "candidates", "CD queries", "seconds"], rows,
-          f"Paper Fig. 8, {os.cpu_count()} threads. A coarse-to-fine mode that reuses the coarser work is not "
-          "built yet (issue 4).")
+            single.append(run.sum(pair, d, threads=threads))
+        print("multiresolution: coarse to fine", pair, flush=True)
+        c2f = run.sum(pair, ds[-1], ["--levels", ",".join(str(d) for d in ds[:-1])], threads=threads)
+        levels = c2f["levels"] if c2f else []
+        total_single = total_c2f = 0
+        for d, r, lv in zip(ds, single, levels + [None] * len(ds)):
+            total_single += r["seconds"]["total"] if r else float("nan")
+            total_c2f += lv["seconds"] if lv else float("nan")
+            rows.append([pair, d, r and r["output_points"], r and r["cd_queries"], fmt(r and r["seconds"]["total"]),
+                         fmt(total_single), lv and lv["output_points"], lv and lv["candidates_reused"],
+                         lv and lv["cd_queries"], fmt(lv and lv["seconds"]), fmt(total_c2f)])
+            series.setdefault(pair, []).append((d, r and r["seconds"]["total"], total_single, total_c2f))
+    write("multiresolution", ["pair", "d / diagonal", "points", "CD queries", "seconds", "all levels so far s",
+                              "coarse-to-fine points", "reused candidates", "CD queries", "level s",
+                              "all levels so far s"], rows,
+          f"Paper Fig. 8, {threads} threads. Left: each d computed on its own. Right: one coarse-to-fine run "
+          "(pmsum sum --levels), each level reusing the normal filter, trees, certificate and the coarser "
+          "level's decisions; its resolutions are multiples of the coarser level's, hence a few more points.")
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for pair, pts in series.items():
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=pair)
+        line, = ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=pair + " (one d)")
+        ax.loglog([p[0] for p in pts], [p[2] for p in pts], "s:", color=line.get_color(),
+                  label=pair + " (all d so far, separately)")
+        ax.loglog([p[0] for p in pts], [p[3] for p in pts], "^--", color=line.get_color(),
+                  label=pair + " (all d so far, coarse to fine)")
     ax.set_xlabel("d / diagonal")
     ax.set_ylabel("seconds")
     ax.invert_xaxis()
-    ax.legend()
+    ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "multiresolution.png"))
+
+
+def bench_goals(run):
+    """The speed goals of issue 4 on CGAL's demo data at d = 0.5%, 2 threads."""
+    rows = []
+    for pair in ["knot1+knot2", "armadillo+sphere"]:
+        print("goals:", pair, flush=True)
+        r = run.sum(pair, 0.005, threads=2)
+        s = r["seconds"]
+        rows.append([pair, r["p"]["faces"], r["q"]["faces"], r["output_points"], r["candidates"],
+                     r["candidates_certified"], r["cd_queries"], fmt(r["cd_queries"] / max(1, r["output_points"])),
+                     fmt(s["normal_filter"]), fmt(s["octree_filter"]), fmt(s["cd_filter"]), fmt(s["total"]),
+                     "yes" if s["total"] <= 10 else "no"])
+    write("goals", ["pair", "faces P", "faces Q", "points", "candidates", "certified", "CD queries",
+                    "CD queries / point", "normal filter s", "octree s", "CD s", "total s", "<= 10 s"], rows,
+          "Issue 4: knot1 + knot2 and armadillo + sphere (x 8) at d = 0.5% of the diagonal in <= 10 s on 2 cores.")
 
 
 def bench_threads(run):
@@ -196,7 +285,7 @@ def bench_peers(run):
             if "seconds" in r and "nef" in r["seconds"]:
                 nef[pair] = r["seconds"]["nef"]
     rows = []
-    for pair in PAIRS:
+    for pair in PEER_PAIRS:
         print("peers:", pair, flush=True)
         ours = run.sum(pair, 0.01, threads=os.cpu_count() or 1)
         t = ours["seconds"]["total"]
@@ -236,7 +325,8 @@ def bench_pd(run):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--only", nargs="*", default=["filters", "multiresolution", "threads", "peers", "pd"])
+    ap.add_argument("--only", nargs="*",
+                    default=["filters", "octree", "multiresolution", "threads", "goals", "peers", "pd"])
     args = ap.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     run = Runner(args.build)

@@ -24,10 +24,10 @@
 #define CGAL_PMSUM_INTERNAL_NORMAL_FILTER_H
 
 #include <CGAL_pmsum/internal/direction_grid.h>
+#include <CGAL_pmsum/internal/parallel.h>
 #include <CGAL_pmsum/internal/sampling.h>
 
 #include <algorithm>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -138,11 +138,7 @@ struct Pair_key
   Feature p_feature() const { return {int(p >> 32), Index(p & 0xffffffffu)}; }
   Feature q_feature() const { return {int(q >> 32), Index(q & 0xffffffffu)}; }
   bool operator==(const Pair_key& o) const { return p == o.p && q == o.q; }
-};
-struct Pair_key_hash
-{
-  std::size_t operator()(const Pair_key& k) const
-  { return std::hash<std::uint64_t>()(k.p * 0x9E3779B97F4A7C15ull ^ k.q); }
+  bool operator<(const Pair_key& o) const { return p != o.p ? p < o.p : q < o.q; }
 };
 
 /// The closure of a feature: itself, its edges and its vertices.
@@ -166,16 +162,21 @@ inline void facet_directions(const Mesh_data& M, Direction::Kind kind, Index t, 
 }
 
 /// The kept feature pairs. Without the normal filter every feature pair is kept; pairs the
-/// filter would have dropped get the facet directions around their features.
-inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_data& Q, bool use_normal_filter)
+/// filter would have dropped get the facet directions around their features. The tests run
+/// in parallel if asked (chunks of facets and edges); the result is sorted, hence the same.
+inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_data& Q, bool use_normal_filter,
+                                               bool parallel = false)
 {
-  std::unordered_map<Pair_key, std::vector<Direction>, Pair_key_hash> kept;
-  auto keep_closure = [&](Feature fp, Feature fq, const Direction& d) {
+  // Kept (pair, direction) records, per chunk of the loops below; sorted and merged at the end.
+  using Kept = std::pair<Pair_key, Direction>;
+  auto keep_closure = [&](std::vector<Kept>& kept, Feature fp, Feature fq, const Direction& d) {
     for (Feature a : closure(P, fp))
-      for (Feature b : closure(Q, fq)) {
-        auto& dirs = kept[Pair_key::of(a, b)];
-        if (std::find(dirs.begin(), dirs.end(), d) == dirs.end()) dirs.push_back(d);
-      }
+      for (Feature b : closure(Q, fq)) kept.push_back({Pair_key::of(a, b), d});
+  };
+  constexpr std::size_t chunks = 64;
+  std::vector<std::vector<Kept>> kept_by_chunk(3 * chunks);
+  auto chunk_range = [](std::size_t chunk, std::size_t n) {
+    return std::make_pair(chunk * n / chunks, (chunk + 1) * n / chunks);
   };
 
   // The direction grid limits the exact tests to pairs that may be extreme in a common
@@ -228,47 +229,64 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
     return all;
   };
 
-  std::vector<Direction> dirs;
   // Case 1: facet of P and vertex of Q, vertex of P and facet of Q.
   const auto q_vertices = vertex_cells(Q);
-  for (Index t = 0; t < P.number_of_triangles(); ++t) {
-    dirs.clear();
-    facet_directions(P, Direction::FACET_OF_P, t, dirs);
-    for (const Direction& d : dirs)
-      for (Index v : candidates(q_vertices, d, Q))
-        if (vertex_is_extreme(Q, v, d, P, Q)) keep_closure({2, t}, {0, v}, d);
-  }
   const auto p_vertices = vertex_cells(P);
-  for (Index t = 0; t < Q.number_of_triangles(); ++t) {
-    dirs.clear();
-    facet_directions(Q, Direction::FACET_OF_Q, t, dirs);
-    for (const Direction& d : dirs)
-      for (Index v : candidates(p_vertices, d, P))
-        if (vertex_is_extreme(P, v, d, P, Q)) keep_closure({0, v}, {2, t}, d);
-  }
+  for_each_index(2 * chunks, parallel, [&](std::size_t job) {
+    const bool p_facets = job < chunks;
+    const Mesh_data &F = p_facets ? P : Q, &V = p_facets ? Q : P;
+    const auto [first, last] = chunk_range(job % chunks, F.number_of_triangles());
+    std::vector<Direction> dirs;
+    for (Index t = Index(first); t < Index(last); ++t) {
+      dirs.clear();
+      facet_directions(F, p_facets ? Direction::FACET_OF_P : Direction::FACET_OF_Q, t, dirs);
+      for (const Direction& d : dirs)
+        for (Index v : candidates(p_facets ? q_vertices : p_vertices, d, V))
+          if (vertex_is_extreme(V, v, d, P, Q)) {
+            if (p_facets) keep_closure(kept_by_chunk[job], {2, t}, {0, v}, d);
+            else keep_closure(kept_by_chunk[job], {0, v}, {2, t}, d);
+          }
+    }
+  });
   // Case 2: non-parallel edges extreme in a common normal direction.
   const auto p_edges = edge_cells(P), q_edges = edge_cells(Q);
   std::vector<std::vector<Index>> q_edges_by_cell(grid.size());
   for (Index b = 0; b < Q.number_of_edges(); ++b)
     for (Index c : q_edges[b]) q_edges_by_cell[c].push_back(b);
-  std::vector<Index> seen(Q.number_of_edges(), no_index); // last edge of P that paired with b
-  for (Index a = 0; a < P.number_of_edges(); ++a) {
-    for (Index c : p_edges[a])
-      for (Index b : q_edges_by_cell[c]) {
-        if (seen[b] == a) continue;
-        seen[b] = a;
-        const Direction plus{Direction::EDGES, 1, a, b};
-        bool parallel = true;
-        for (int k = 0; k < 3 && parallel; ++k)
-          parallel = filtered_sign([&](auto nt) { return plus.vector<decltype(nt)>(P, Q)[k]; }) == CGAL::ZERO;
-        if (parallel) continue;
-        for (std::int8_t sgn : {1, -1}) {
-          const Direction d{Direction::EDGES, sgn, a, b};
-          if (edge_is_extreme(P, a, d, P, Q) && edge_is_extreme(Q, b, d, P, Q))
-            keep_closure({1, a}, {1, b}, d);
+  for_each_index(chunks, parallel, [&](std::size_t chunk) {
+    std::vector<Kept>& kept = kept_by_chunk[2 * chunks + chunk];
+    std::vector<Index> seen(Q.number_of_edges(), no_index); // last edge of P that paired with b
+    const auto [first, last] = chunk_range(chunk, P.number_of_edges());
+    for (Index a = Index(first); a < Index(last); ++a) {
+      for (Index c : p_edges[a])
+        for (Index b : q_edges_by_cell[c]) {
+          if (seen[b] == a) continue;
+          seen[b] = a;
+          const Direction plus{Direction::EDGES, 1, a, b};
+          bool is_parallel = true;
+          for (int k = 0; k < 3 && is_parallel; ++k)
+            is_parallel = filtered_sign([&](auto nt) { return plus.vector<decltype(nt)>(P, Q)[k]; }) == CGAL::ZERO;
+          if (is_parallel) continue;
+          for (std::int8_t sgn : {1, -1}) {
+            const Direction d{Direction::EDGES, sgn, a, b};
+            if (edge_is_extreme(P, a, d, P, Q) && edge_is_extreme(Q, b, d, P, Q))
+              keep_closure(kept, {1, a}, {1, b}, d);
+          }
         }
-      }
+    }
+  });
+  std::vector<Kept> kept;
+  {
+    std::size_t n = 0;
+    for (const auto& k : kept_by_chunk) n += k.size();
+    kept.reserve(n);
+    for (auto& k : kept_by_chunk) { kept.insert(kept.end(), k.begin(), k.end()); k = {}; }
   }
+  auto by_pair_then_direction = [](const Kept& x, const Kept& y) {
+    return x.first == y.first ? x.second < y.second : x.first < y.first;
+  };
+  std::sort(kept.begin(), kept.end(), by_pair_then_direction);
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
 
   if (!use_normal_filter) {
     auto around = [](const Mesh_data& M, Direction::Kind kind, Feature f, std::vector<Direction>& out) {
@@ -289,28 +307,31 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
       return fs;
     };
     const std::vector<Feature> fp_all = all_features(P), fq_all = all_features(Q);
+    std::vector<Kept> others;
+    std::vector<Direction> d;
     for (Feature a : fp_all)
       for (Feature b : fq_all) {
-        auto& d = kept[Pair_key::of(a, b)];
-        if (!d.empty()) continue;
+        const Pair_key key = Pair_key::of(a, b);
+        const auto it = std::lower_bound(kept.begin(), kept.end(), key,
+                                         [](const Kept& k, const Pair_key& x) { return k.first < x; });
+        if (it != kept.end() && it->first == key) continue;
+        d.clear();
         around(P, Direction::FACET_OF_P, a, d);
         around(Q, Direction::FACET_OF_Q, b, d);
+        for (const Direction& x : d) others.push_back({key, x});
       }
+    kept.insert(kept.end(), others.begin(), others.end());
+    std::sort(kept.begin(), kept.end(), by_pair_then_direction);
+    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
   }
 
-  std::vector<std::pair<Pair_key, std::vector<Direction>*>> sorted;
-  sorted.reserve(kept.size());
-  for (auto& kv : kept) sorted.emplace_back(kv.first, &kv.second);
-  std::sort(sorted.begin(), sorted.end(), [](const auto& x, const auto& y) {
-    return x.first.p != y.first.p ? x.first.p < y.first.p : x.first.q < y.first.q;
-  });
   Candidate_pairs out;
-  out.pairs.reserve(sorted.size());
-  for (auto& [key, d] : sorted) {
-    std::sort(d->begin(), d->end());
-    out.pairs.push_back({key.p_feature(), key.q_feature(), std::uint32_t(out.directions.size()),
-                         std::uint32_t(d->size())});
-    out.directions.insert(out.directions.end(), d->begin(), d->end());
+  out.directions.reserve(kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (i == 0 || !(kept[i].first == kept[i - 1].first))
+      out.pairs.push_back({kept[i].first.p_feature(), kept[i].first.q_feature(), std::uint32_t(i), 0});
+    ++out.pairs.back().number_of_directions;
+    out.directions.push_back(kept[i].second);
   }
   return out;
 }

@@ -15,12 +15,13 @@
 // and half-diagonal rho is interior as soon as
 //     dist(c - a, Q) < r - rho     for some ball B(a, r) inside P,
 // or the same with P and Q exchanged. Balls inside P: points of a grid inside P with their
-// distance to the surface, thinned greedily (a discrete medial axis). Distances to Q: upper
-// bounds on a grid (0 inside Q, else the distance to the surface), with dist 1-Lipschitz:
-// dist(z, Q) <= D(g) + |z - g| for the grid point g nearest to z. Inside/outside of grid
+// distance to the surface, thinned greedily (a discrete medial axis). Distances to Q: from
+// the corners g of z's cell in a grid around Q, dist(z, Q) <= |z - s(g)| with s(g) the
+// surface point nearest to g, and <= max(0, |z - g| - r(g)) when g is inside Q at distance
+// r(g) from its surface. Inside/outside of grid
 // points comes from exact parity along grid rows (CGAL's exact 2D orientation decides which
-// triangles a row crosses); a point too close to a crossing to trust the double crossing
-// abscissa is "unknown" and certifies nothing. Every double quantity is turned into a bound
+// triangles a row crosses, interval arithmetic bounds where); a point within such an interval
+// is "unknown" and certifies nothing. Every double quantity is turned into a bound
 // with a relative margin far above its rounding error, so the certificate is sound; the
 // margins only make it certify a little less (never a wrong candidate skipped).
 //
@@ -31,13 +32,9 @@
 #define CGAL_PMSUM_INTERNAL_OCTREE_FILTER_H
 
 #include <CGAL_pmsum/internal/cd_filter.h>
+#include <CGAL_pmsum/internal/parallel.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -50,21 +47,6 @@
 namespace CGAL {
 namespace Pmsum {
 namespace internal {
-
-/// Runs f(i) for i in [0, n), in parallel if asked and TBB is there.
-template <class F>
-void for_each_index(std::size_t n, bool parallel, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if (parallel) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
-    });
-    return;
-  }
-#endif
-  for (std::size_t i = 0; i < n; ++i) f(i);
-}
 
 using Point3 = std::array<double, 3>;
 
@@ -224,7 +206,7 @@ private:
     for (Index t = 0; t < M.number_of_triangles(); ++t) any_closed |= M.triangle_is_closed(t);
     if (!any_closed) return state;
     const std::size_t rows = std::size_t(m_n[1]) * m_n[2];
-    std::vector<std::vector<double>> crossings(rows);
+    std::vector<std::vector<std::pair<double, double>>> crossings(rows); // intervals of abscissae
     std::vector<std::uint8_t> degenerate(rows, 0);
     using P2 = Epick::Point_2;
     for (Index t = 0; t < M.number_of_triangles(); ++t) {
@@ -256,9 +238,13 @@ private:
             continue;
           }
           if (o0 != o1 || o1 != o2) continue; // the row misses the triangle
-          // The row crosses the triangle's interior: abscissa by barycentric coordinates.
-          const double wa = area2(b, c, p), wb = area2(c, a, p), wc = area2(a, b, p);
-          crossings[row].push_back((wa * a[0] + wb * b[0] + wc * c[0]) / (wa + wb + wc));
+          // The row crosses the triangle's interior: an interval of its abscissa, by
+          // barycentric coordinates in interval arithmetic (wide for a nearly flat projection).
+          CGAL::Protect_FPU_rounding<true> guard;
+          const Interval wa = area2(b, c, p), wb = area2(c, a, p), wc = area2(a, b, p), w = wa + wb + wc;
+          Interval x(-HUGE_VAL, HUGE_VAL);
+          if (CGAL::certainly(w != 0)) x = (wa * a[0] + wb * b[0] + wc * c[0]) / w;
+          crossings[row].push_back({x.inf(), x.sup()});
         }
     }
     for (std::size_t row = 0; row < rows; ++row) {
@@ -267,21 +253,25 @@ private:
         std::fill(state.begin() + base, state.begin() + base + m_n[0], 2);
         continue;
       }
-      auto& xs = crossings[row];
-      std::sort(xs.begin(), xs.end());
-      std::size_t passed = 0;
+      const auto& xs = crossings[row];
       for (int i = 0; i < m_n[0]; ++i) {
         const double x = m_lo[0] + m_s * i;
-        while (passed < xs.size() && xs[passed] < x) ++passed;
-        const bool near = (passed > 0 && x - xs[passed - 1] <= m_tol) || (passed < xs.size() && xs[passed] - x <= m_tol);
-        state[base + i] = near ? 2 : (passed % 2 == 1 ? 1 : 0);
+        std::size_t left = 0;
+        bool near = false;
+        for (const auto& [lo, hi] : xs) {
+          if (hi < x - m_tol) ++left;
+          else if (lo <= x + m_tol) near = true;
+        }
+        state[base + i] = near ? 2 : (left % 2 == 1 ? 1 : 0);
       }
     }
     return state;
   }
 
-  static double area2(const Point3& u, const Point3& v, const Epick::Point_2& p)
-  { return (v[1] - u[1]) * (p.y() - u[2]) - (v[2] - u[2]) * (p.x() - u[1]); }
+  static Interval area2(const Point3& u, const Point3& v, const Epick::Point_2& p)
+  {
+    return (Interval(v[1]) - u[1]) * (Interval(p.y()) - u[2]) - (Interval(v[2]) - u[2]) * (Interval(p.x()) - u[1]);
+  }
 
   Point3 m_lo{};
   double m_s = 0, m_tol = 0;

@@ -101,7 +101,7 @@ public:
     if (o.use_cd_filter) m_geometry.emplace(mp, mq); // AABB trees
     m_seconds_trees = seconds_since(start);
     start = Clock::now();
-    m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter);
+    m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel);
     m_seconds_normal_filter = seconds_since(start);
   }
 
