@@ -81,8 +81,8 @@ inline Planning_scene slot_scene(double g = 1. / 16)
   s.name = "slot";
   s.robot = box({0, 0, 0}, {1, 1, 1});
   s.obstacle = union_of_boxes(b);
-  s.start = {-1.125, -0.875, 0};
-  s.goal = {0.625, 0, -0.875};
+  s.start = {-1.125, -0.875, -0.125}; // strictly free (no contact), like the pocket's
+  s.goal = {0.625, -0.125, -0.875};
   s.gap = g;
   return s;
 }
