@@ -263,6 +263,15 @@ def bench_plan(run, seeds=20, time_limit=10.0):
                                      text=True, check=True)
                 runs.append(json.loads(out.stdout))
                 print(out.stdout.strip())
+    with open(os.path.join(RESULTS, "plan_vs_ompl.json"), "w") as f:
+        json.dump(runs, f, indent=0)
+    report_plan(runs, seeds, time_limit)
+
+
+def report_plan(runs, seeds=20, time_limit=10.0):
+    """Table and picture of bench_plan's runs (also: python3 -c 'import run_benchmarks as b, json;
+    b.report_plan(json.load(open("results/plan_vs_ompl.json")))' from benchmark/)."""
+    import statistics
     rows, labels, rates, times = [], [], [], []
     names = {"pmsum": "CGAL_pmsum (d = 0.5)", "rrtconnect": "OMPL RRTConnect", "prm": "OMPL PRM"}
     for problem in ["pocket", "slot"]:
@@ -276,7 +285,7 @@ def bench_plan(run, seeds=20, time_limit=10.0):
                          fmt(statistics.median(t_ok)) if t_ok else "–",
                          fmt(statistics.median(t_all)),
                          fmt(statistics.mean([r["length"] for r in ok])) if ok else "–"])
-            labels.append(f"{problem}\n{names[planner].replace('OMPL ', '')}")
+            labels.append(f"{problem}\n{planner}")
             rates.append(len(ok) / len(rs))
             times.append(t_all)
     write("plan_vs_ompl", ["problem", "planner", "solved", "mean s (solved)", "median s (solved)",
@@ -289,7 +298,7 @@ def bench_plan(run, seeds=20, time_limit=10.0):
           "validator = the exact swept-segment test (no discretisation resolution); every returned path was "
           "re-checked segment by segment (solved = exact solution and verified). CGAL_pmsum's planner is "
           "deterministic (3 identical runs); its time includes the contact space (13k / 20k points) and "
-          "the roadmap.")
+          "the roadmap. The 2-core machine was shared with other builds (load about 6): times are noisy.")
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
     x = range(len(labels))
     a1.bar(x, rates, color=["C0", "C1", "C2"] * 2)
