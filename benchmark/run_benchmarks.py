@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Speed benchmarks of CGAL_pmsum, side by side in one run (issue 4).
 
-    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters multiresolution threads peers pd]
+    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters multiresolution threads peers pd plan]
 
 Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
   filters          time and CD queries: CD only, CD + normal, CD + normal + octree
@@ -14,6 +14,8 @@ Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
                    minkowskiSum (npm manifold-3d, installed here with npm), as ratios
   pd               penetration-depth queries per second (benchmark/pd_queries.cpp), and against
                    FCL on convex pairs (benchmark/pd_vs_fcl.cpp; needs Debian's libfcl-dev)
+  plan             translational motion planning against OMPL's RRTConnect and PRM, 20 seeds
+                   (benchmark/plan_vs_ompl.cpp; installs Debian's libompl-dev if missing)
 Needs Debian's python3-matplotlib; the peers need node and npm.
 """
 import argparse
@@ -320,6 +322,87 @@ def bench_pd(run):
         print("wrote pd_vs_fcl.md")
     else:
         print("pd_vs_fcl not built (apt-get install libfcl-dev, then rebuild)")
+
+
+def ensure_ompl_benchmark(run):
+    """plan_vs_ompl is built only when CMake finds OMPL: install libompl-dev and build it."""
+    build = os.path.dirname(run.pmsum)
+    exe = os.path.join(build, "plan_vs_ompl")
+    if os.path.exists(exe):
+        return exe
+    if subprocess.run(["dpkg", "-s", "libompl-dev"], capture_output=True).returncode != 0:
+        sudo = [] if os.geteuid() == 0 else ["sudo"]
+        subprocess.run(sudo + ["apt-get", "install", "-y", "-qq", "libompl-dev"], check=True,
+                       env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"))
+    subprocess.run(["cmake", "-S", ROOT, "-B", build], check=True, capture_output=True)
+    subprocess.run(["cmake", "--build", build, "--target", "plan_vs_ompl", "-j2"], check=True)
+    return exe
+
+
+def bench_plan(run, seeds=20, time_limit=10.0):
+    """Translational motion planning: ours (deterministic: 3 timed runs) against OMPL's
+    RRTConnect and PRM (20 seeds, 10 s each), all with the same exact collision checks."""
+    import statistics
+    exe = ensure_ompl_benchmark(run)
+    runs = []
+    for problem in ["pocket", "slot"]:
+        for planner, n in [("pmsum", 3), ("rrtconnect", seeds), ("prm", seeds)]:
+            for seed in range(1, n + 1):
+                out = subprocess.run([exe, problem, planner, str(seed), str(time_limit)], capture_output=True,
+                                     text=True, check=True)
+                runs.append(json.loads(out.stdout))
+                print(out.stdout.strip())
+    with open(os.path.join(RESULTS, "plan_vs_ompl.json"), "w") as f:
+        json.dump(runs, f, indent=0)
+    report_plan(runs, seeds, time_limit)
+
+
+def report_plan(runs, seeds=20, time_limit=10.0):
+    """Table and picture of bench_plan's runs (also: python3 -c 'import run_benchmarks as b, json;
+    b.report_plan(json.load(open("results/plan_vs_ompl.json")))' from benchmark/)."""
+    import statistics
+    rows, labels, rates, times = [], [], [], []
+    names = {"pmsum": "CGAL_pmsum (d = 0.5)", "rrtconnect": "OMPL RRTConnect", "prm": "OMPL PRM"}
+    for problem in ["pocket", "slot"]:
+        for planner in ["pmsum", "rrtconnect", "prm"]:
+            rs = [r for r in runs if r["problem"] == problem and r["planner"] == planner]
+            ok = [r for r in rs if r["solved"] and r["verified"]]
+            t_all = [r["seconds"] for r in rs]
+            t_ok = [r["seconds"] for r in ok]
+            rows.append([problem, names[planner], f"{len(ok)}/{len(rs)}",
+                         fmt(statistics.mean(t_ok)) if t_ok else "–",
+                         fmt(statistics.median(t_ok)) if t_ok else "–",
+                         fmt(statistics.median(t_all)),
+                         fmt(statistics.mean([r["length"] for r in ok])) if ok else "–"])
+            labels.append(f"{problem}\n{planner}")
+            rates.append(len(ok) / len(rs))
+            times.append(t_all)
+    write("plan_vs_ompl", ["problem", "planner", "solved", "mean s (solved)", "median s (solved)",
+                           "median s (all runs)", "mean path length"], rows,
+          "A unit cube robot, clearance 1/16 (src/planning_scenes.h). pocket: the paper's Fig. 12(b) kind, the "
+          "robot under a lid must slide sideways 1 + 1/16 with clearance 1/16 in y and z, then rise through a "
+          "chimney with clearance 1/16 in x and y. slot: a closed room split by a wall with a slot 1 + 1/16 wide. "
+          f"One thread, wall clock; OMPL: {seeds} seeds, {time_limit:g} s limit per run, bounds = a box around "
+          "the pocket scene / the room's inside; state validity = CGAL_pmsum's exact point test, motion "
+          "validator = the exact swept-segment test (no discretisation resolution); every returned path was "
+          "re-checked segment by segment (solved = exact solution and verified). CGAL_pmsum's planner is "
+          "deterministic (3 identical runs); its time includes the contact space (13k / 20k points) and "
+          "the roadmap. The 2-core machine was shared with other builds (load about 6): times are noisy.")
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    x = range(len(labels))
+    a1.bar(x, rates, color=["C0", "C1", "C2"] * 2)
+    a1.set_xticks(list(x))
+    a1.set_xticklabels(labels, fontsize=8)
+    a1.set_ylabel("success rate")
+    a1.set_ylim(0, 1.05)
+    a2.boxplot(times, labels=labels)
+    a2.set_yscale("log")
+    a2.set_ylabel(f"seconds per run (failures at the {time_limit:g} s limit)")
+    a2.tick_params(axis="x", labelsize=8)
+    fig.suptitle("Translational planning, clearance 1/16: CGAL_pmsum vs OMPL (same exact checks)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "plan_vs_ompl.png"), dpi=110)
+    print("wrote plan_vs_ompl.png")
 
 
 def main():

@@ -8,12 +8,13 @@
 //
 // Exit codes: 0 success, 1 error (bad input, I/O), 2 command-line mistake, 3 refused
 // (the run would need more memory than the machine has; --force overrides), 4 validation
-// found a point off the exact boundary or a shell not covered within d.
+// found a point off the exact boundary or a shell not covered within d, 5 plan found no path.
 
 #include "cli_common.h"
 #include "shape_presets.h"
 
 #include <CGAL_pmsum/Penetration_depth.h>
+#include <CGAL_pmsum/Translational_motion_planner.h>
 #include <CGAL_pmsum/point_offset.h>
 #include <CGAL_pmsum/point_sweep.h>
 
@@ -34,6 +35,7 @@ const char* const usage_text =
   "  offset MESH -r R -d D -o OUT   points covering the offset (or --erode: erosion) of MESH\n"
   "  sweep MESH --path F -d D -o OUT   points covering the volume swept along a polyline\n"
   "  pd P Q -d D --at X Y Z  penetration depth of P translated by (X, Y, Z) into Q\n"
+  "  plan ROBOT OBSTACLE --start X Y Z --goal X Y Z -d D   a free path of a translating robot\n"
   "  generate NAME -o OUT  write a procedural model of the validation suite (.off)\n"
   "\n"
   "pmsum <command> --help shows the options of a command.\n";
@@ -306,6 +308,112 @@ int command_sweep(int argc, char** argv)
   return 0;
 }
 
+const char* const plan_help =
+  "usage: pmsum plan ROBOT OBSTACLE --start X Y Z --goal X Y Z -d D [options]\n"
+  "\n"
+  "A path of ROBOT translating among the fixed OBSTACLE from the translation start to goal:\n"
+  "a polyline of translations, each segment checked exactly (the robot may touch and slide\n"
+  "along the obstacle, never overlap it). The roadmap is built over points covering the\n"
+  "contact space (boundary of -ROBOT + OBSTACLE) within D. Prints one 'x y z' line per\n"
+  "vertex. Exit code 5 and a one-line message when the roadmap joins no path (which does not\n"
+  "prove that none exists); exit code 1 when start or goal overlaps the obstacle.\n"
+  "\n"
+  "  -d D                  covering distance of the contact points (> 0)\n"
+  "  --relative            D is a fraction of the diagonal of the bounding box of -ROBOT + OBSTACLE\n"
+  "  -k K                  neighbours per roadmap node (default 12)\n"
+  "  -o FILE               also write the path to FILE (same format)\n"
+  "  --json FILE           summary: counts, seconds, path length\n"
+  "  --threads N           threads of the contact-space computation (default: all cores)\n"
+  "  --quiet               no notes\n";
+
+/// Pulls "OPTION x y z" out of argv (the generic parser takes one value per option).
+std::vector<std::array<double, 3>> take_triples(int argc, char** argv, const std::string& option, std::vector<char*>& rest)
+{
+  std::vector<std::array<double, 3>> r;
+  rest.clear();
+  for (int i = 0; i < argc; ++i) {
+    if (std::string(argv[i]) != option) { rest.push_back(argv[i]); continue; }
+    if (i + 3 >= argc) throw Usage_error(option + " needs three numbers");
+    std::array<double, 3> t;
+    for (int c = 0; c < 3; ++c) {
+      char* end = nullptr;
+      t[c] = std::strtod(argv[i + 1 + c], &end);
+      if (end == argv[i + 1 + c] || *end != '\0' || !std::isfinite(t[c]))
+        throw Usage_error(option + " needs three numbers, got '" + argv[i + 1 + c] + "'");
+    }
+    r.push_back(t);
+    i += 3;
+  }
+  return r;
+}
+
+int command_plan(int argc, char** argv)
+{
+  std::vector<char*> rest1, rest2;
+  const auto starts = take_triples(argc, argv, "--start", rest1);
+  const auto goals = take_triples(int(rest1.size()), rest1.data(), "--goal", rest2);
+  const Arguments args(int(rest2.size()), rest2.data(), 2, {"-d", "-k", "-o", "--json", "--threads"},
+                       {"--relative", "--quiet", "--help", "-h"});
+  if (args.flag("--help") || args.flag("-h")) { std::cout << plan_help; return 0; }
+  if (args.positional.size() != 2) throw Usage_error("plan needs two meshes ROBOT and OBSTACLE");
+  if (starts.size() != 1 || goals.size() != 1) throw Usage_error("plan needs one --start X Y Z and one --goal X Y Z");
+  if (!args.has("-d")) throw Usage_error("plan needs -d D");
+  double d = args.number("-d");
+  if (!(d > 0) || !std::isfinite(d)) throw Usage_error("-d must be a positive number");
+  unsigned k = 12;
+  if (args.has("-k")) {
+    const double kk = args.number("-k");
+    if (!(kk >= 1) || kk != std::floor(kk) || kk > 1000) throw Usage_error("-k must be a positive integer");
+    k = unsigned(kk);
+  }
+  int threads = 0;
+  if (args.has("--threads")) {
+    const double t = args.number("--threads");
+    if (!(t >= 1) || t != std::floor(t) || t > 1024) throw Usage_error("--threads must be a positive integer");
+    threads = int(t);
+  }
+  const bool quiet = args.flag("--quiet");
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh R = read_mesh(args.positional[0], "ROBOT", quiet);
+  const Mesh O = read_mesh(args.positional[1], "OBSTACLE", quiet);
+  if (args.flag("--relative")) d *= sum_diagonal(PMP::bbox(R), PMP::bbox(O));
+  using Planner = CGAL::Pmsum::Translational_motion_planner<Mesh, Mesh>;
+  std::optional<Planner> planner;
+  with_threads(threads, [&](auto tag) { planner.emplace(Planner::make<decltype(tag)>(R, O, d, k)); });
+  const auto& s = starts.front();
+  const auto& g = goals.front();
+  const Planner::Result r = planner->plan(K::Point_3(s[0], s[1], s[2]), K::Point_3(g[0], g[1], g[2]));
+  const auto& st = planner->statistics();
+  if (args.has("--json")) {
+    Json j;
+    j.str("command", "plan").str("robot", args.positional[0]).str("obstacle", args.positional[1]).num("d", d)
+      .integer("k", k).boolean("found", r.found).integer("path_vertices", r.path.size()).num("path_length", r.length)
+      .integer("contact_points", st.contact_points).integer("nodes", st.nodes).integer("roadmap_edges", st.roadmap_edges)
+      .integer("nodes_checked", st.nodes_checked).integer("edges_checked", st.edges_checked)
+      .integer("edges_invalid", st.edges_invalid).integer("searches", st.search_iterations)
+      .num("seconds_contact_space", st.seconds_contact_space).num("seconds_roadmap", st.seconds_roadmap)
+      .num("seconds_query", st.seconds_query).num("seconds", seconds_since(start));
+    write_json(args.values.at("--json"), j);
+  }
+  if (!r.found) {
+    std::cerr << "pmsum: no path found: start and goal are not connected in the roadmap of " << st.nodes
+              << " contact points (try a smaller -d or a larger -k)\n";
+    return 5;
+  }
+  std::ostringstream text;
+  text << std::setprecision(17);
+  for (const auto& t : r.path) text << t.x() << ' ' << t.y() << ' ' << t.z() << '\n';
+  std::cout << text.str();
+  if (args.has("-o")) {
+    std::ofstream out(args.values.at("-o"));
+    if (!(out << text.str())) throw Error("cannot write '" + args.values.at("-o") + "'");
+  }
+  if (!quiet)
+    std::cerr << "pmsum: path of " << r.path.size() << " vertices, length " << std::setprecision(6) << r.length << " ("
+              << st.contact_points << " contact points, " << std::setprecision(3) << seconds_since(start) << " s)\n";
+  return 0;
+}
+
 int command_generate(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"-o"}, {"--help", "-h", "--list"});
@@ -343,6 +451,7 @@ int main(int argc, char** argv)
     if (command == "offset") return command_offset(argc, argv);
     if (command == "pd") return command_pd(argc, argv);
     if (command == "sweep") return command_sweep(argc, argv);
+    if (command == "plan") return command_plan(argc, argv);
     throw Usage_error("unknown command '" + command + "'");
   } catch (const Usage_error& e) {
     std::cerr << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")

@@ -9,6 +9,7 @@
 #define CGAL_PMSUM_SHAPE_PRESETS_H
 
 #include "suite_shapes.h"
+#include "planning_scenes.h"
 
 #include <fstream>
 #include <functional>
@@ -40,6 +41,8 @@ inline const std::map<std::string, std::function<Soup()>>& shape_presets()
     {"knot", [] { return torus_knot(2, 3, 2, 1, 0.3, 32, 5); }},
     {"hollow-box", [] { return hollow_box_with_windows(4, 0.5, 1); }},   // + cube-large: easy void
     {"plates", [] { return separated_plates(4, 0.5, 0.25); }},            // + cube-small: difficult void
+    {"pocket", [] { return pocket_scene().obstacle; }},     // motion planning, robot: cube
+    {"slot-room", [] { return slot_scene().obstacle; }},    // motion planning, robot: cube
   };
   return presets;
 }

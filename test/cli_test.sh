@@ -126,6 +126,19 @@ printf '0 0 0\n1 0 0\n' > "$work/path.txt"
 if awk '{ if ($1 < 0 || $1 > 2 || $2 < 0 || $2 > 1 || $3 < 0 || $3 > 1) bad = 1 } END { exit bad }' "$work/sweep.xyz"; then ok; else ko "sweep bounds"; fi
 printf '0 0 0\nnot numbers\n' > "$work/badpath.txt"
 expect_fail 1 "expected three numbers" -- sweep "$cube" --path "$work/badpath.txt" -d 0.1 -o "$work/out.xyz"
+
+# plan: the robot (unit cube) out of a pocket under a lid; every vertex printed, start and goal
+# at the ends; an unreachable goal (outside a closed room) exits 5; overlapping start exits 1.
+"$pmsum" generate pocket -o "$work/pocket.off" && "$pmsum" generate slot-room -o "$work/room.off" && ok || ko "generate pocket"
+if "$pmsum" plan "$cube" "$work/pocket.off" --start 0.03125 0.03125 0.03125 --goal 2.875 0.03125 1.8125 -d 0.5 \
+     -o "$work/plan.txt" --json "$work/plan.json" --quiet > "$work/plan_stdout"; then ok; else ko "plan"; fi
+if [ "$(head -1 "$work/plan.txt")" = "0.03125 0.03125 0.03125" ] && [ "$(tail -1 "$work/plan.txt")" = "2.875 0.03125 1.8125" ] \
+   && cmp -s "$work/plan.txt" "$work/plan_stdout"; then ok; else ko "plan path ends"; fi
+grep -q '"found": true' "$work/plan.json" && ok || ko "plan json"
+expect_fail 5 "no path found" -- plan "$cube" "$work/room.off" --start -1.125 -0.875 0 --goal 5 5 5 -d 0.5 -o "$work/out.txt"
+expect_fail 1 "not free"      -- plan "$cube" "$work/pocket.off" --start 0.5 0.5 -0.5 --goal 3 3 3 -d 0.5 -o "$work/out.txt"
+expect_fail 2 "three numbers" -- plan "$cube" "$work/pocket.off" --start 0.5 0.5 --goal 3 3 3 -d 0.5
+expect_fail 2 "needs -d"      -- plan "$cube" "$work/pocket.off" --start 0 0 0 --goal 3 3 3
 expect_fail 2 "three numbers" -- pd "$cube" "$cube" -d 0.1 --at 1 2
 
 # --- bad input --------------------------------------------------------------------------
