@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Speed benchmarks of CGAL_pmsum, side by side in one run (issue 4).
 
-    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters multiresolution threads peers pd plan]
+    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters octree multiresolution goals threads peers pd plan]
 
 Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
   filters          time and CD queries: CD only, CD + normal, CD + normal + octree
@@ -409,7 +409,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--only", nargs="*",
-                    default=["filters", "octree", "multiresolution", "threads", "goals", "peers", "pd"])
+                    default=["filters", "octree", "multiresolution", "threads", "goals", "peers", "pd", "plan"])
     args = ap.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     run = Runner(args.build)
