@@ -8,18 +8,18 @@
 // P translated by t overlaps Q iff t is inside (-P) + Q; the shortest translation that
 // separates them moves t to the nearest point of C, and its length is the penetration depth
 // PD(t). The contact points are exactly on C and cover it within d, so the nearest one gives
-// PD within d: PD <= PD' < PD + d. Built once (the point-based sum and a CGAL Kd_tree); then
+// PD within d: PD <= PD' < PD + d. Built once (the point-based sum and a static kd-tree with
+// oriented bounds, internal/nearest_point_tree.h, exact: the nearest stored point); then
 //   nearest_contact(t)  the nearest contact point (fast: a kd-tree query), and
 //   query(t)            exact overlap test (the CD filter of the core) + nearest contact.
 
 #ifndef CGAL_PMSUM_PENETRATION_DEPTH_H
 #define CGAL_PMSUM_PENETRATION_DEPTH_H
 
+#include <CGAL_pmsum/internal/nearest_point_tree.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 
 #include <memory>
 #include <vector>
@@ -74,9 +74,10 @@ public:
   {
     Result r;
     if (m_points.empty()) return r;
-    Search search(*m_tree, t, 1);
-    r.contact = search.begin()->first;
-    r.depth = std::sqrt(search.begin()->second);
+    const double q[3] = {t.x(), t.y(), t.z()};
+    const auto nearest = m_tree->nearest(q);
+    r.contact = m_points[nearest.first];
+    r.depth = std::sqrt(nearest.second);
     const Vector_3 v = r.contact - t;
     r.direction = r.depth > 0 ? v / r.depth : Vector_3(0, 0, 0);
     return r;
@@ -100,9 +101,6 @@ public:
   }
 
 private:
-  using Traits = CGAL::Search_traits_3<Kernel>;
-  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
-
   Penetration_depth(const PolygonMeshP& P, const PolygonMeshQ& Q, double d) : m_d(d)
   {
     internal::Mesh_descriptors<PolygonMeshP> dp;
@@ -115,15 +113,15 @@ private:
 
   void build()
   {
-    m_tree = std::make_shared<typename Search::Tree>(m_points.begin(), m_points.end());
-    m_tree->build();
+    m_tree = std::make_shared<internal::Nearest_point_tree>(
+      m_points.size(), [this](std::size_t i, int a) { return m_points[i][a]; });
     m_geometry = std::make_shared<internal::Cd_geometry>(*m_p, *m_q);
     m_filter = std::make_shared<internal::Cd_filter>(m_geometry.get());
   }
 
   double m_d;
   std::vector<Point_3> m_points;
-  std::shared_ptr<typename Search::Tree> m_tree;
+  std::shared_ptr<const internal::Nearest_point_tree> m_tree;
   std::shared_ptr<internal::Mesh_data> m_p, m_q;
   std::shared_ptr<internal::Cd_geometry> m_geometry;
   std::shared_ptr<internal::Cd_filter> m_filter;
