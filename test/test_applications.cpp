@@ -155,6 +155,8 @@ TEST_CASE("erosion needs a closed mesh", "[applications][erosion]")
 #include <CGAL/Random.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <thread>
+
 TEST_CASE("penetration depth of convex pairs: within d of the exact depth", "[applications][pd]")
 {
   for (unsigned seed : {11u, 12u}) {
@@ -260,6 +262,21 @@ TEST_CASE("penetration depth: nearest_contact is the nearest contact point", "[a
   }
   CHECK(mismatches == 0);
   CHECK(overlapping > 50);
+
+  // copies have their own overlap test state: one copy per thread gives the sequential answers
+  std::vector<IK::Point_3> ts;
+  for (int i = 0; i < 300; ++i) ts.emplace_back(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+  std::vector<double> expected;
+  for (const auto& t : ts) expected.push_back(pd.query(t).depth);
+  std::vector<double> got[2];
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back([&, k, copy = pd]() mutable {
+      for (const auto& t : ts) got[k].push_back(copy.query(t).depth);
+    });
+  for (auto& th : threads) th.join();
+  CHECK(got[0] == expected);
+  CHECK(got[1] == expected);
 }
 
 #include <CGAL_pmsum/point_sweep.h>

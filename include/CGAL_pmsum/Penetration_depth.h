@@ -65,6 +65,20 @@ public:
     return pd;
   }
 
+  /// A copy shares the tree and the collision geometry (read-only) but has its own overlap test
+  /// state, so that each thread can query its own copy.
+  Penetration_depth(const Penetration_depth& other)
+    : m_d(other.m_d), m_points(other.m_points), m_tree(other.m_tree), m_p(other.m_p), m_q(other.m_q),
+      m_geometry(other.m_geometry), m_filter(std::make_shared<internal::Cd_filter>(m_geometry.get()))
+  {}
+  Penetration_depth(Penetration_depth&&) = default;
+  Penetration_depth& operator=(const Penetration_depth& other)
+  {
+    if (this != &other) *this = Penetration_depth(other);
+    return *this;
+  }
+  Penetration_depth& operator=(Penetration_depth&&) = default;
+
   std::size_t number_of_contact_points() const { return m_points.size(); }
   const std::vector<Point_3>& contact_points() const { return m_points; }
   double covering_distance() const { return m_d; }
@@ -83,7 +97,7 @@ public:
     return r;
   }
 
-  /// Exact: do the interiors of P + t and Q overlap? (Not thread-safe: one object per thread.)
+  /// Exact: do the interiors of P + t and Q overlap? (Not thread-safe: one object, or copy, per thread.)
   bool overlaps(const Point_3& t) { return !m_filter->is_free_at({t.x(), t.y(), t.z()}); }
 
   /// Penetration depth at t: 0 without overlap, else the nearest contact (within d of PD).
