@@ -290,8 +290,10 @@ private:
     return s * safety;
   }
 
-  // The largest i with coordinate(i) <= x, and the smallest with coordinate(i) >= x (the same
-  // function as the queries use, so the decoded box contains x as the queries compute it).
+  // An i with decode(i) <= x, and one with decode(i) >= x, one step beyond the nearest (decode()
+  // is the function the queries use; decode(0) is exact: the smallest coordinate, or -1.001 R;
+  // decode(65535) is above the largest). The step of slack covers a compiler that would evaluate
+  // decode() differently here and in a query (e.g. contracting it to a fused multiply-add).
   template <class Decode>
   static std::uint16_t quantize_below(double x, double origin, double step, Decode decode)
   {
@@ -299,7 +301,7 @@ private:
     std::uint16_t i = std::uint16_t((std::max)(0., (std::min)(65535., k)));
     while (i > 0 && decode(i) > x) --i;
     if (decode(i) > x) throw std::logic_error("Nearest_point_tree: quantization");
-    return i;
+    return i > 0 ? i - 1 : i; // a step of slack: no reliance on decode() rounding the same way twice
   }
   template <class Decode>
   static std::uint16_t quantize_above(double x, double origin, double step, Decode decode)
@@ -308,7 +310,7 @@ private:
     std::uint16_t i = std::uint16_t((std::max)(0., (std::min)(65535., k)));
     while (i < 65535 && decode(i) < x) ++i;
     if (decode(i) < x) throw std::logic_error("Nearest_point_tree: quantization");
-    return i;
+    return i < 65535 ? i + 1 : i;
   }
 
   // Fills node `id` for the points order[b, e) and builds its subtree.
