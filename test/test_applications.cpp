@@ -155,6 +155,8 @@ TEST_CASE("erosion needs a closed mesh", "[applications][erosion]")
 #include <CGAL/Random.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <thread>
+
 TEST_CASE("penetration depth of convex pairs: within d of the exact depth", "[applications][pd]")
 {
   for (unsigned seed : {11u, 12u}) {
@@ -183,6 +185,98 @@ TEST_CASE("penetration depth of convex pairs: within d of the exact depth", "[ap
     }
     CHECK(inside > 10);
   }
+}
+
+namespace {
+/// The smallest squared distance from q to the points, by brute force, computed as the tree does.
+double brute_force_nearest(const std::vector<double>& xyz, const double* q)
+{
+  double best = HUGE_VAL;
+  for (std::size_t i = 0; i < xyz.size(); i += 3) best = (std::min)(best, CGAL::Pmsum::internal::squared_distance(&xyz[i], q));
+  return best;
+}
+} // namespace
+
+TEST_CASE("nearest-point tree: the same nearest distance as brute force", "[applications][pd]")
+{
+  // Points on a sphere, on lattices in three tilted planes (many equal distances), and duplicates;
+  // queries far outside, deep inside, near the points and on them.
+  CGAL::Random rng(7);
+  std::vector<double> xyz;
+  for (int i = 0; i < 20000; ++i) {
+    const double z = rng.get_double(-1, 1), a = rng.get_double(0, 6.283185307179586), r = std::sqrt(1 - z * z);
+    xyz.insert(xyz.end(), {r * std::cos(a), r * std::sin(a), z});
+  }
+  for (int plane = 0; plane < 3; ++plane)
+    for (int i = 0; i < 100; ++i)
+      for (int j = 0; j < 60; ++j) {
+        const double u = i / 64., v = j / 64.;
+        const double p[3][3] = {{u, v, 2}, {2 + u, 0.5 * u, v}, {u + v, u - v, -2 + 0.25 * v}};
+        xyz.insert(xyz.end(), p[plane], p[plane] + 3);
+      }
+  for (int i = 0; i < 300; ++i) xyz.insert(xyz.end(), {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+  const std::size_t n = xyz.size() / 3;
+  const CGAL::Pmsum::internal::Nearest_point_tree tree(n, [&](std::size_t i, int a) { return xyz[3 * i + a]; });
+  REQUIRE(tree.size() == n);
+  std::size_t mismatches = 0;
+  for (int i = 0; i < 2000; ++i) {
+    double q[3];
+    const double scale = i % 4 == 0 ? 1000 : i % 4 == 1 ? 0.3 : 3; // far, inside the sphere, around
+    for (double& c : q) c = rng.get_double(-scale, scale);
+    if (i % 10 == 9) { // on a point, or next to one
+      const std::size_t j = std::size_t(rng.get_int(0, int(n)));
+      for (int a = 0; a < 3; ++a) q[a] = xyz[3 * j + a] + (i % 20 == 9 ? 0 : rng.get_double(-1e-3, 1e-3));
+    }
+    const auto r = tree.nearest(q);
+    const double expected = brute_force_nearest(xyz, q);
+    mismatches += r.second != expected || CGAL::Pmsum::internal::squared_distance(&xyz[3 * r.first], q) != expected;
+  }
+  CHECK(mismatches == 0);
+  // one point; all points equal
+  const std::vector<double> one = {1, 2, 3};
+  const CGAL::Pmsum::internal::Nearest_point_tree t1(1, [&](std::size_t i, int a) { return one[3 * i + a]; });
+  const double q[3] = {1, 2, 5};
+  CHECK(t1.nearest(q).first == 0);
+  CHECK(t1.nearest(q).second == 4);
+  const CGAL::Pmsum::internal::Nearest_point_tree same(500, [&](std::size_t, int a) { return one[a]; });
+  CHECK(same.nearest(q).second == 4);
+}
+
+TEST_CASE("penetration depth: nearest_contact is the nearest contact point", "[applications][pd]")
+{
+  const Soup ps = random_convex(10, 21), qs = transformed(random_convex(12, 71), 0.8);
+  auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(to_mesh<Mesh>(ps), to_mesh<Mesh>(qs), 0.05);
+  std::vector<double> xyz;
+  for (const auto& p : pd.contact_points()) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  CGAL::Random rng(5);
+  std::size_t mismatches = 0, overlapping = 0;
+  for (int i = 0; i < 500; ++i) {
+    const double scale = i % 3 == 0 ? 100 : i % 3 == 1 ? 0.2 : 3; // far outside, deep inside, around
+    const IK::Point_3 t(rng.get_double(-scale, scale), rng.get_double(-scale, scale), rng.get_double(-scale, scale));
+    const double q[3] = {t.x(), t.y(), t.z()};
+    const auto r = pd.nearest_contact(t);
+    const double c[3] = {r.contact.x(), r.contact.y(), r.contact.z()};
+    const double expected = brute_force_nearest(xyz, q);
+    mismatches += r.depth != std::sqrt(expected) || CGAL::Pmsum::internal::squared_distance(c, q) != expected;
+    overlapping += pd.overlaps(t);
+  }
+  CHECK(mismatches == 0);
+  CHECK(overlapping > 50);
+
+  // copies have their own overlap test state: one copy per thread gives the sequential answers
+  std::vector<IK::Point_3> ts;
+  for (int i = 0; i < 300; ++i) ts.emplace_back(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+  std::vector<double> expected;
+  for (const auto& t : ts) expected.push_back(pd.query(t).depth);
+  std::vector<double> got[2];
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back([&, k, copy = pd]() mutable {
+      for (const auto& t : ts) got[k].push_back(copy.query(t).depth);
+    });
+  for (auto& th : threads) th.join();
+  CHECK(got[0] == expected);
+  CHECK(got[1] == expected);
 }
 
 #include <CGAL_pmsum/point_sweep.h>

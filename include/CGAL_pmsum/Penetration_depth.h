@@ -8,18 +8,18 @@
 // P translated by t overlaps Q iff t is inside (-P) + Q; the shortest translation that
 // separates them moves t to the nearest point of C, and its length is the penetration depth
 // PD(t). The contact points are exactly on C and cover it within d, so the nearest one gives
-// PD within d: PD <= PD' < PD + d. Built once (the point-based sum and a CGAL Kd_tree); then
+// PD within d: PD <= PD' < PD + d. Built once (the point-based sum and a static kd-tree with
+// oriented bounds, internal/nearest_point_tree.h, exact: the nearest stored point); then
 //   nearest_contact(t)  the nearest contact point (fast: a kd-tree query), and
 //   query(t)            exact overlap test (the CD filter of the core) + nearest contact.
 
 #ifndef CGAL_PMSUM_PENETRATION_DEPTH_H
 #define CGAL_PMSUM_PENETRATION_DEPTH_H
 
+#include <CGAL_pmsum/internal/nearest_point_tree.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 
 #include <memory>
 #include <vector>
@@ -65,6 +65,20 @@ public:
     return pd;
   }
 
+  /// A copy shares the tree and the collision geometry (read-only) but has its own overlap test
+  /// state, so that each thread can query its own copy.
+  Penetration_depth(const Penetration_depth& other)
+    : m_d(other.m_d), m_points(other.m_points), m_tree(other.m_tree), m_p(other.m_p), m_q(other.m_q),
+      m_geometry(other.m_geometry), m_filter(std::make_shared<internal::Cd_filter>(m_geometry.get()))
+  {}
+  Penetration_depth(Penetration_depth&&) = default;
+  Penetration_depth& operator=(const Penetration_depth& other)
+  {
+    if (this != &other) *this = Penetration_depth(other);
+    return *this;
+  }
+  Penetration_depth& operator=(Penetration_depth&&) = default;
+
   std::size_t number_of_contact_points() const { return m_points.size(); }
   const std::vector<Point_3>& contact_points() const { return m_points; }
   double covering_distance() const { return m_d; }
@@ -74,15 +88,16 @@ public:
   {
     Result r;
     if (m_points.empty()) return r;
-    Search search(*m_tree, t, 1);
-    r.contact = search.begin()->first;
-    r.depth = std::sqrt(search.begin()->second);
+    const double q[3] = {t.x(), t.y(), t.z()};
+    const auto nearest = m_tree->nearest(q);
+    r.contact = m_points[nearest.first];
+    r.depth = std::sqrt(nearest.second);
     const Vector_3 v = r.contact - t;
     r.direction = r.depth > 0 ? v / r.depth : Vector_3(0, 0, 0);
     return r;
   }
 
-  /// Exact: do the interiors of P + t and Q overlap? (Not thread-safe: one object per thread.)
+  /// Exact: do the interiors of P + t and Q overlap? (Not thread-safe: one object, or copy, per thread.)
   bool overlaps(const Point_3& t) { return !m_filter->is_free_at({t.x(), t.y(), t.z()}); }
 
   /// Penetration depth at t: 0 without overlap, else the nearest contact (within d of PD).
@@ -100,9 +115,6 @@ public:
   }
 
 private:
-  using Traits = CGAL::Search_traits_3<Kernel>;
-  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
-
   Penetration_depth(const PolygonMeshP& P, const PolygonMeshQ& Q, double d) : m_d(d)
   {
     internal::Mesh_descriptors<PolygonMeshP> dp;
@@ -115,15 +127,15 @@ private:
 
   void build()
   {
-    m_tree = std::make_shared<typename Search::Tree>(m_points.begin(), m_points.end());
-    m_tree->build();
+    m_tree = std::make_shared<internal::Nearest_point_tree>(
+      m_points.size(), [this](std::size_t i, int a) { return m_points[i][a]; });
     m_geometry = std::make_shared<internal::Cd_geometry>(*m_p, *m_q);
     m_filter = std::make_shared<internal::Cd_filter>(m_geometry.get());
   }
 
   double m_d;
   std::vector<Point_3> m_points;
-  std::shared_ptr<typename Search::Tree> m_tree;
+  std::shared_ptr<const internal::Nearest_point_tree> m_tree;
   std::shared_ptr<internal::Mesh_data> m_p, m_q;
   std::shared_ptr<internal::Cd_geometry> m_geometry;
   std::shared_ptr<internal::Cd_filter> m_filter;
