@@ -76,6 +76,7 @@ struct Tree_mesh
   // Hierarchy of the triangles and bare edges, for surface crossings: item i < number of
   // triangles is triangle i, item number_of_triangles() + k is bare edge bare_edges[k].
   Bvh items;
+  std::vector<Vec3<Interval>> normals;     // (b - a) x (c - a) of each triangle, enclosed
   CGAL::Bbox_3 closed_box;                 // bounding box of the closed components
   bool has_closed = false;
   // Ray direction of the point-in-solid test. Any direction works: a triangle parallel to
@@ -93,6 +94,13 @@ struct Tree_mesh
       if (m.triangle_is_closed(t)) {
         closed_box += triangles.back().second.bbox();
         has_closed = true;
+      }
+    }
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      for (const auto& tri : m.triangles) {
+        const Vec3<Interval> a = to_nt<Interval>(base[tri[0]]);
+        normals.push_back(cross(to_nt<Interval>(base[tri[1]]) - a, to_nt<Interval>(base[tri[2]]) - a));
       }
     }
     std::vector<CGAL::Bbox_3> boxes;
@@ -434,12 +442,39 @@ private:
       A[i] = {&m_moving.base[tm[i]], 1};
       B[i] = {&m_static.base[ts[i]], 0};
     }
+    if (separated_by_a_plane(tm, ts, m_static.normals[s], m_moving.normals[t])) return false;
     std::array<CGAL::Sign, 3> sa, sb; // sides of A's points w.r.t. B's plane, and reverse
     for (int i = 0; i < 3; ++i) sa[i] = orientation(B[0], B[1], B[2], A[i]);
     if (sa[0] == sa[1] && sa[1] == sa[2]) return false;
     for (int i = 0; i < 3; ++i) sb[i] = orientation(A[0], A[1], A[2], B[i]);
     if (sb[0] == sb[1] && sb[1] == sb[2]) return false;
     return edge_crosses(A, sa, B) || edge_crosses(B, sb, A);
+  }
+
+  /// Quick exit of triangles_cross(): are all vertices of one triangle certainly strictly
+  /// on one side of the other's plane? Interval signs with the normals computed once; when
+  /// certain they are the signs orientation() would return (it looks at the perturbation
+  /// only when the sign at x itself is zero).
+  bool separated_by_a_plane(const std::array<Index, 3>& tm, const std::array<Index, 3>& ts,
+                            const Vec3<Interval>& n_static, const Vec3<Interval>& n_moving) const
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    std::array<Vec3<Interval>, 3> a, b; // moving vertices (translated by x), static vertices
+    for (int i = 0; i < 3; ++i) {
+      a[i] = to_nt<Interval>(m_moving.base[tm[i]]) + m_x;
+      b[i] = to_nt<Interval>(m_static.base[ts[i]]);
+    }
+    auto one_side = [](const std::array<Vec3<Interval>, 3>& p, const Vec3<Interval>& o, const Vec3<Interval>& n) {
+      int sign = 0;
+      for (int i = 0; i < 3; ++i) {
+        const Interval v = dot(p[i] - o, n);
+        const int si = v.inf() > 0 ? 1 : v.sup() < 0 ? -1 : 0;
+        if (si == 0 || (i > 0 && si != sign)) return false;
+        sign = si;
+      }
+      return true;
+    };
+    return one_side(a, b[0], n_static) || one_side(b, a[0], n_moving);
   }
 
   std::array<Moving_point, 3> static_triangle(Index s) const
