@@ -410,7 +410,8 @@ def report_plan(runs, seeds=20, time_limit=10.0):
           "validator = the exact swept-segment test (no discretisation resolution); every returned path was "
           "re-checked segment by segment (solved = exact solution and verified). CGAL_pmsum's planner is "
           "deterministic (3 identical runs); its time includes the contact space (13k / 20k points) and "
-          "the roadmap. The 2-core machine was shared with other builds (load about 6): times are noisy.")
+          f"the roadmap. Load average when the report was written: {os.getloadavg()[0]:.1f} on "
+          f"{os.cpu_count()} cores.")
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
     x = range(len(labels))
     a1.bar(x, rates, color=["C0", "C1", "C2"] * 2)

@@ -126,6 +126,35 @@ struct Tree_mesh
 
 };
 
+/// AABB tree traversal along a ray from `origin` in direction `dir` (node boxes grown by
+/// `margin`, for conservative double slab tests): on_primitive(id) for every triangle whose
+/// box the ray meets.
+template <class F>
+struct Ray_traversal
+{
+  std::array<double, 3> origin, dir;
+  double margin;
+  F on_primitive;
+  bool go_further() const { return true; }
+  bool hits(const CGAL::Bbox_3& b) const
+  {
+    double tmin = 0, tmax = HUGE_VAL;
+    for (int c = 0; c < 3; ++c) {
+      const double lo = b.min(c) - margin, hi = b.max(c) + margin;
+      if (dir[c] == 0) { if (origin[c] < lo || origin[c] > hi) return false; continue; }
+      double t1 = (lo - origin[c]) / dir[c], t2 = (hi - origin[c]) / dir[c];
+      if (t1 > t2) std::swap(t1, t2);
+      tmin = (std::max)(tmin, t1); tmax = (std::min)(tmax, t2);
+    }
+    return tmin <= tmax;
+  }
+  template <class Query, class Primitive>
+  void intersection(const Query&, const Primitive& p) { if (hits(p.datum().bbox())) on_primitive(p.id()); }
+  template <class Query, class Node>
+  bool do_intersect(const Query&, const Node& node) const { return hits(node.bbox()); }
+};
+template <class F> Ray_traversal(std::array<double, 3>, std::array<double, 3>, double, F) -> Ray_traversal<F>;
+
 /// Counters of the CD filter, for the summary.
 struct Cd_statistics
 {
@@ -578,32 +607,6 @@ private:
     return true;
   }
 
-  // ----- AABB traversal (rays) --------------------------------------------------------
-  template <class F>
-  struct Ray_traversal
-  {
-    std::array<double, 3> origin, dir;
-    double margin;
-    F on_primitive;
-    bool go_further() const { return true; }
-    bool hits(const CGAL::Bbox_3& b) const
-    {
-      double tmin = 0, tmax = HUGE_VAL;
-      for (int c = 0; c < 3; ++c) {
-        const double lo = b.min(c) - margin, hi = b.max(c) + margin;
-        if (dir[c] == 0) { if (origin[c] < lo || origin[c] > hi) return false; continue; }
-        double t1 = (lo - origin[c]) / dir[c], t2 = (hi - origin[c]) / dir[c];
-        if (t1 > t2) std::swap(t1, t2);
-        tmin = (std::max)(tmin, t1); tmax = (std::min)(tmax, t2);
-      }
-      return tmin <= tmax;
-    }
-    template <class Query, class Primitive>
-    void intersection(const Query&, const Primitive& p) { if (hits(p.datum().bbox())) on_primitive(p.id()); }
-    template <class Query, class Node>
-    bool do_intersect(const Query&, const Node& node) const { return hits(node.bbox()); }
-  };
-  template <class F> Ray_traversal(std::array<double, 3>, std::array<double, 3>, double, F) -> Ray_traversal<F>;
 
   const Mesh_data* m_p;
   const Mesh_data* m_q;

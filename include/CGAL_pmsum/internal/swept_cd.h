@@ -346,31 +346,6 @@ private:
   };
   template <class F> Box_traversal(CGAL::Bbox_3, F) -> Box_traversal<F>;
 
-  template <class F>
-  struct Ray_traversal
-  {
-    std::array<double, 3> origin, dir;
-    double margin;
-    F on_primitive;
-    bool go_further() const { return true; }
-    bool hits(const CGAL::Bbox_3& b) const
-    {
-      double tmin = 0, tmax = HUGE_VAL;
-      for (int c = 0; c < 3; ++c) {
-        const double lo = b.min(c) - margin, hi = b.max(c) + margin;
-        if (dir[c] == 0) { if (origin[c] < lo || origin[c] > hi) return false; continue; }
-        double t1 = (lo - origin[c]) / dir[c], t2 = (hi - origin[c]) / dir[c];
-        if (t1 > t2) std::swap(t1, t2);
-        tmin = (std::max)(tmin, t1); tmax = (std::min)(tmax, t2);
-      }
-      return tmin <= tmax;
-    }
-    template <class Query, class Primitive>
-    void intersection(const Query&, const Primitive& p) { if (hits(p.datum().bbox())) on_primitive(p.id()); }
-    template <class Query, class Node>
-    bool do_intersect(const Query&, const Node& node) const { return hits(node.bbox()); }
-  };
-  template <class F> Ray_traversal(std::array<double, 3>, std::array<double, 3>, double, F) -> Ray_traversal<F>;
 
   Tree_mesh m_p, m_q;
   double m_scale = 1, m_margin = 0;
