@@ -126,6 +126,33 @@ struct Tree_mesh
 
 };
 
+/// Does an edge of triangle E, whose vertices lie on sides `side` of the plane of T, cross
+/// the interior of T? `orientation(a, b, c, d)` is the sign of det[b - a, c - a, d - a],
+/// never zero (generic, perturbed configurations).
+template <class Point, class Orientation>
+bool edge_crosses(const std::array<Point, 3>& E, const std::array<CGAL::Sign, 3>& side,
+                  const std::array<Point, 3>& T, const Orientation& orientation)
+{
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (side[i] == side[j]) continue;
+    const CGAL::Sign o1 = orientation(E[i], E[j], T[0], T[1]);
+    const CGAL::Sign o2 = orientation(E[i], E[j], T[1], T[2]);
+    if (o1 != o2) continue;
+    if (orientation(E[i], E[j], T[2], T[0]) == o1) return true;
+  }
+  return false;
+}
+
+/// Does the segment (u, v) cross the interior of triangle T (same `orientation`)?
+template <class Point, class Orientation>
+bool segment_crosses(const std::array<Point, 2>& seg, const std::array<Point, 3>& T, const Orientation& orientation)
+{
+  if (orientation(T[0], T[1], T[2], seg[0]) == orientation(T[0], T[1], T[2], seg[1])) return false;
+  const CGAL::Sign o1 = orientation(seg[0], seg[1], T[0], T[1]);
+  return o1 == orientation(seg[0], seg[1], T[1], T[2]) && o1 == orientation(seg[0], seg[1], T[2], T[0]);
+}
+
 /// AABB tree traversal along a ray from `origin` in direction `dir` (node boxes grown by
 /// `margin`, for conservative double slab tests): on_primitive(id) for every triangle whose
 /// box the ray meets.
@@ -516,25 +543,13 @@ private:
   /// Does the segment (u, v) cross the interior of triangle T (one moving, one static)?
   bool segment_crosses(const std::array<Moving_point, 2>& seg, const std::array<Moving_point, 3>& T)
   {
-    if (orientation(T[0], T[1], T[2], seg[0]) == orientation(T[0], T[1], T[2], seg[1])) return false;
-    const CGAL::Sign o1 = orientation(seg[0], seg[1], T[0], T[1]);
-    return o1 == orientation(seg[0], seg[1], T[1], T[2]) && o1 == orientation(seg[0], seg[1], T[2], T[0]);
+    return internal::segment_crosses(seg, T, [this](const auto&... p) { return orientation(p...); });
   }
 
-  /// Does an edge of triangle E, whose vertices lie on sides `side` of the plane of T,
-  /// cross the interior of T?
   bool edge_crosses(const std::array<Moving_point, 3>& E, const std::array<CGAL::Sign, 3>& side,
                     const std::array<Moving_point, 3>& T)
   {
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      if (side[i] == side[j]) continue;
-      const CGAL::Sign o1 = orientation(E[i], E[j], T[0], T[1]);
-      const CGAL::Sign o2 = orientation(E[i], E[j], T[1], T[2]);
-      if (o1 != o2) continue;
-      if (orientation(E[i], E[j], T[2], T[0]) == o1) return true;
-    }
-    return false;
+    return internal::edge_crosses(E, side, T, [this](const auto&... p) { return orientation(p...); });
   }
 
   // ----- containment -------------------------------------------------------------------

@@ -261,22 +261,12 @@ private:
   bool edge_crosses(const std::array<Swept_point, 3>& E, const std::array<CGAL::Sign, 3>& side,
                     const std::array<Swept_point, 3>& T)
   {
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      if (side[i] == side[j]) continue;
-      const CGAL::Sign o1 = orientation(E[i], E[j], T[0], T[1]);
-      const CGAL::Sign o2 = orientation(E[i], E[j], T[1], T[2]);
-      if (o1 != o2) continue;
-      if (orientation(E[i], E[j], T[2], T[0]) == o1) return true;
-    }
-    return false;
+    return internal::edge_crosses(E, side, T, [this](const auto&... p) { return orientation(p...); });
   }
 
   bool segment_crosses(const std::array<Swept_point, 2>& seg, const std::array<Swept_point, 3>& T)
   {
-    if (orientation(T[0], T[1], T[2], seg[0]) == orientation(T[0], T[1], T[2], seg[1])) return false;
-    const CGAL::Sign o1 = orientation(seg[0], seg[1], T[0], T[1]);
-    return o1 == orientation(seg[0], seg[1], T[1], T[2]) && o1 == orientation(seg[0], seg[1], T[2], T[0]);
+    return internal::segment_crosses(seg, T, [this](const auto&... p) { return orientation(p...); });
   }
 
   // ----- containment: ray parity (as in Cd_filter::inside) ---------------------------
