@@ -269,3 +269,46 @@ TEST_CASE("coarse to fine: every level exact and covering, coarser points reused
                                                             [](std::size_t, const CGAL::Pmsum::Statistics&, std::vector<Record>&&) {}),
                   CGAL::Pmsum::Invalid_input);
 }
+
+#include <CGAL_pmsum/internal/octree_filter.h>
+
+#include <CGAL/Random.h>
+
+TEST_CASE("interior certificate: every certified box lies inside the exact sum", "[octree]")
+{
+  namespace in = CGAL::Pmsum::internal;
+  // Convex pairs: the sum is one exact convex piece, and a box is inside it iff its corners are.
+  const std::pair<Soup, Soup> pairs[] = {{box({0, 0, 0}, {1, 0.5, 0.25}), tetrahedron(0.6)},
+                                         {octahedron(0.8), ellipsoid(0.3, 0.2, 0.5)}};
+  for (const auto& [P, Q] : pairs) {
+    const Mesh mp = to_mesh<Mesh>(P), mq = to_mesh<Mesh>(Q);
+    in::Mesh_descriptors<Mesh> dp, dq;
+    const in::Mesh_data a = in::make_mesh_data(mp, get(CGAL::vertex_point, mp), false, false, "P", dp);
+    const in::Mesh_data b = in::make_mesh_data(mq, get(CGAL::vertex_point, mq), false, false, "Q", dq);
+    const in::Interior_certificate certificate(a, b, 24, 1e-9 * 4, false);
+    const Reference ref(P, Q);
+    REQUIRE(ref.pieces.size() == 1);
+    const auto box_p = in::mesh_box(a), box_q = in::mesh_box(b);
+    CGAL::Random rng(11);
+    std::size_t certified = 0, inside = 0;
+    for (int i = 0; i < 20000; ++i) {
+      in::Point3 c;
+      for (int k = 0; k < 3; ++k)
+        c[k] = rng.get_double(box_p.first[k] + box_q.first[k], box_p.second[k] + box_q.second[k]);
+      const double rho = rng.get_double(0, 0.2);
+      const double h = rho / std::sqrt(3.0); // half side of the cube of half-diagonal rho
+      bool corners_inside = true;
+      for (int corner = 0; corner < 8; ++corner) {
+        const EK::Point_3 x(EK::FT(c[0]) + ((corner & 1) ? h : -h), EK::FT(c[1]) + ((corner & 2) ? h : -h),
+                            EK::FT(c[2]) + ((corner & 4) ? h : -h));
+        corners_inside = corners_inside && ref.pieces[0].locate(x) < 0;
+      }
+      inside += corners_inside;
+      if (!certificate.certifies(c, rho)) continue;
+      ++certified;
+      REQUIRE(corners_inside); // sound: never a box that reaches the boundary
+    }
+    INFO(certified << " of " << inside << " inner boxes certified");
+    CHECK(certified > inside / 4); // and useful
+  }
+}
