@@ -106,6 +106,14 @@ def fmt(x, digits=3):
     return "–" if x is None else f"{x:.{digits}g}"
 
 
+def log_bars_per_pair(ax, labels):
+    """Log scale, one tick per pair (slanted names), legend: the bar charts of filters and octree."""
+    ax.set_yscale("log")
+    ax.set_xticks(list(range(len(labels))))
+    ax.set_xticklabels(labels, rotation=40, ha="right", fontsize=8)
+    ax.legend(fontsize=8)
+
+
 def bench_filters(run):
     d = 0.05  # "CD only" tests every sample pair: m * n queries
     rows, labels, series = [], [], {"CD": ([], []), "CD + normal": ([], []), "CD + normal + octree": ([], [])}
@@ -133,11 +141,8 @@ def bench_filters(run):
     for k, (a, title) in enumerate(zip(ax, ["seconds", "CD queries"])):
         for j, (name, ys) in enumerate(series.items()):
             a.bar([i + (j - 1) * 0.27 for i in x], ys[k], 0.27, label=name)
-        a.set_yscale("log")
         a.set_title(title)
-        a.set_xticks(list(x))
-        a.set_xticklabels(labels, rotation=40, ha="right", fontsize=8)
-        a.legend(fontsize=8)
+        log_bars_per_pair(a, labels)
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "filters.png"))
 
@@ -167,11 +172,8 @@ def bench_octree(run):
     ax.bar([i - 0.2 for i in x], [r[0] for r in ratio], 0.4, label="without octree")
     ax.bar([i + 0.2 for i in x], [r[1] for r in ratio], 0.4, label="with octree")
     ax.axhline(2, color="k", ls=":", label="goal: 2 CD queries per point")
-    ax.set_yscale("log")
     ax.set_ylabel("CD queries per output point")
-    ax.set_xticks(list(x))
-    ax.set_xticklabels(labels, rotation=40, ha="right", fontsize=8)
-    ax.legend(fontsize=8)
+    log_bars_per_pair(ax, labels)
     fig.tight_layout()
     fig.savefig(os.path.join(RESULTS, "octree.png"))
 

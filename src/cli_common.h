@@ -337,6 +337,14 @@ const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-no
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
 
+/// The -o path of a command that writes points (it must be there): a .ply or .xyz file.
+inline std::string points_output_path(const Arguments& args)
+{
+  const std::string path = args.values.at("-o");
+  if (extension(path) != "ply" && extension(path) != "xyz") throw Usage_error("-o must name a .ply or .xyz file");
+  return path;
+}
+
 /// The inputs of a sum, read and checked.
 struct Sum_input
 {

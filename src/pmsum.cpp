@@ -56,9 +56,8 @@ int command_sum(int argc, char** argv)
   const Arguments args(argc, argv, 2, valued, sum_flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << sum_help; return 0; }
   if (!args.has("-o")) throw Usage_error("sum needs -o OUT");
-  const std::string out_path = args.values.at("-o");
+  const std::string out_path = points_output_path(args);
   const std::string out_ext = extension(out_path);
-  if (out_ext != "ply" && out_ext != "xyz") throw Usage_error("-o must name a .ply or .xyz file");
 
   const auto t_start = std::chrono::steady_clock::now();
   const Sum_input in = read_sum_input(args);
@@ -136,8 +135,7 @@ int command_offset(int argc, char** argv)
   if (args.positional.size() != 1) throw Usage_error("offset needs one mesh");
   for (const char* o : {"-r", "-d", "-o"})
     if (!args.has(o)) throw Usage_error(std::string("offset needs ") + o);
-  const std::string out_path = args.values.at("-o");
-  if (extension(out_path) != "ply" && extension(out_path) != "xyz") throw Usage_error("-o must name a .ply or .xyz file");
+  const std::string out_path = points_output_path(args);
   double r = args.number("-r"), d = args.number("-d");
   if (!(r > 0) || !std::isfinite(r) || !(d > 0) || !std::isfinite(d)) throw Usage_error("-r and -d must be positive numbers");
   const double error = args.has("--sphere-error") ? args.number("--sphere-error") : 0.02;
@@ -264,8 +262,7 @@ int command_sweep(int argc, char** argv)
   if (args.positional.size() != 1) throw Usage_error("sweep needs one mesh");
   for (const char* o : {"--path", "-d", "-o"})
     if (!args.has(o)) throw Usage_error(std::string("sweep needs ") + o);
-  const std::string out_path = args.values.at("-o");
-  if (extension(out_path) != "ply" && extension(out_path) != "xyz") throw Usage_error("-o must name a .ply or .xyz file");
+  const std::string out_path = points_output_path(args);
   double d = args.number("-d");
   if (!(d > 0) || !std::isfinite(d)) throw Usage_error("-d must be a positive number");
   const auto start = std::chrono::steady_clock::now();
