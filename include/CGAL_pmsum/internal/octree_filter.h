@@ -98,10 +98,18 @@ public:
     m_closest.resize(N);
 
     const std::vector<std::uint8_t> state = classify(M); // 0 outside, 1 inside, 2 unknown
-    Tree_mesh surface(M, false);
-    if (M.number_of_triangles() > 0) { // build the distance search tree before going parallel
-      surface.tree.accelerate_distance_queries();
-      surface.tree.closest_point(Epick::Point_3(lo[0], lo[1], lo[2]));
+    // An AABB tree of the triangles, for closest points (built, with its distance search
+    // tree, before going parallel).
+    std::vector<std::pair<Index, Epick::Triangle_3>> triangles;
+    auto vertex = [&](Index v) { return Epick::Point_3(M.points[v][0], M.points[v][1], M.points[v][2]); };
+    for (Index t = 0; t < M.number_of_triangles(); ++t) {
+      const auto& tri = M.triangles[t];
+      triangles.emplace_back(t, Epick::Triangle_3(vertex(tri[0]), vertex(tri[1]), vertex(tri[2])));
+    }
+    Triangle_tree surface(triangles.cbegin(), triangles.cend());
+    if (!triangles.empty()) {
+      surface.accelerate_distance_queries();
+      surface.closest_point(Epick::Point_3(lo[0], lo[1], lo[2]));
     }
     // More bare edges than that are ignored: distances to a subset of the mesh are upper bounds too.
     const bool few_edges = M.bare_edges.size() <= 1024;
@@ -110,7 +118,7 @@ public:
       double best = std::numeric_limits<double>::infinity();
       Point3 closest = g;
       if (M.number_of_triangles() > 0) {
-        const Epick::Point_3 c = surface.tree.closest_point(Epick::Point_3(g[0], g[1], g[2]));
+        const Epick::Point_3 c = surface.closest_point(Epick::Point_3(g[0], g[1], g[2]));
         closest = {c.x(), c.y(), c.z()};
         best = distance3(g, closest);
       }
