@@ -1,9 +1,13 @@
 #!/usr/bin/python3
 """Speed benchmarks of CGAL_pmsum, side by side in one run (issue 4).
 
-    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only filters octree multiresolution goals threads peers pd plan]
+    benchmark/run_benchmarks.py [--build BUILD_DIR] [--only net filters octree multiresolution goals threads peers pd plan]
 
 Writes benchmark/results/NAME.md (a table) and NAME.png (matplotlib) for
+  net              the default output, a (d/2, d)-net, against every boundary candidate
+                   (--all-candidates) on the validation suite at d = 1% and the goal pairs at
+                   0.5%: points, points / ideal, spacing, CD queries, seconds, exactness and
+                   coverage (pmsum validate), 1 vs 2 threads, Nef and Manifold as ratios
   filters          time and CD queries: CD only, CD + normal, CD + normal + octree
   octree           the octree filter at 1-2%: certified candidates, CD queries saved, same output
   multiresolution  d = 5%, 1%, 0.5%, 0.1% of the diagonal: points and seconds, each d alone and
@@ -53,8 +57,14 @@ PAIRS = {
     "knot1+knot2": ("cgal:knot1.off", "cgal:knot2.off", []),
     "armadillo+sphere": ("cgal:armadillo.off", "cgal:sphere.off", ["--scale-q", "8"]),
 }
+sys.path.insert(0, os.path.join(HERE, "validation"))
+from run_suite import SUITE  # noqa: E402  (the validation suite's pairs, one definition)
+
+for _name, _p, _q, _d, _extra, _slow in SUITE:
+    PAIRS.setdefault(_name, (_p, _q, _extra))
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
-PEER_PAIRS = [p for p in PAIRS if not PAIRS[p][0].startswith("cgal:")]
+PEER_PAIRS = [p for p in ["knot1+tetrahedron", "elephant+octahedron", "cross+star", "l-shape+tetrahedron", "hooks",
+                           "blocks+cube", "difficult-void", "frame+knot", "open-cube+ellipsoid"]]
 
 
 class Runner:
@@ -94,6 +104,21 @@ class Runner:
         return r
 
 
+    def validate(self, pair, d, extra=(), threads=2, timeout=3600):
+        """pmsum validate (exactness and coverage against Nef); the exact sum is cached per pair."""
+        ps, qs, args = PAIRS[pair]
+        js = os.path.join(self.work, "validate.json")
+        exact = os.path.join(self.work, pair + ".nef3")
+        cache = ["--exact", exact] if os.path.exists(exact) else ["--save-exact", exact]
+        cmd = [self.pmsum, "validate", self.path(ps), self.path(qs), "-d", str(d), "--relative", "--quiet",
+               "--threads", str(threads), "--json", js, *cache, *args, *extra]
+        try:
+            subprocess.run(cmd, timeout=timeout, stdout=subprocess.DEVNULL)
+        except subprocess.TimeoutExpired:
+            return None
+        return json.load(open(js)) if os.path.exists(js) else None
+
+
 def write(name, header, rows, note=""):
     with open(os.path.join(RESULTS, name + ".md"), "w") as f:
         f.write(f"# {name}\n\n{note}\n\n| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
@@ -112,6 +137,56 @@ def log_bars_per_pair(ax, labels):
     ax.set_xticks(list(range(len(labels))))
     ax.set_xticklabels(labels, rotation=40, ha="right", fontsize=8)
     ax.legend(fontsize=8)
+
+
+NO_NEF = {"open-cube+ellipsoid"}  # open mesh: Nef's sum is not defined for it
+GOAL_PAIRS = [("knot1+knot2", 0.005), ("armadillo+sphere", 0.005)]  # Nef does not finish in 10 minutes
+
+
+def bench_net(run):
+    """Issue 10: the default (d/2, d)-net against every boundary candidate, side by side."""
+    cases = [(name, 0.01) for name, *_ in SUITE] + GOAL_PAIRS
+    rows, plot = [], []
+    for pair, d in cases:
+        print("net:", pair, flush=True)
+        net = run.sum(pair, d, threads=2)
+        one = run.sum(pair, d, threads=1)
+        full = run.sum(pair, d, ["--all-candidates"], threads=2)
+        v = None if pair in NO_NEF or (pair, d) in GOAL_PAIRS else run.validate(pair, d)
+        m = None if pair in NO_NEF else manifold(run, pair)
+        ours = net["seconds"]["total"]
+        nef = v and v["seconds"]["nef"]
+        ms = m and m.get("seconds")
+        # ideal = area / (2.598 d^2): the exact area (Nef), else Manifold's mesh of the sum
+        area_ideal = v and v["ideal_points"]
+        if not area_ideal and m and m.get("surface_area"):
+            area_ideal = m["surface_area"] / (2.598 * net["d"] ** 2)
+        exact = "–" if not v else f"{v['exactness_failures']} / {v['shells_covered']} of {v['shells']}"
+        rows.append([pair, d, full["output_points"], net["output_points"],
+                     fmt(area_ideal and net["output_points"] / area_ideal),
+                     fmt(v and v["minimum_spacing_over_d"]), fmt(v and v["worst_coverage_over_d"]), exact,
+                     full["cd_queries"], net["cd_queries"], net["candidates_covered"],
+                     fmt(full["seconds"]["total"]), fmt(ours), fmt(nef), fmt(nef and nef / ours), fmt(ms),
+                     fmt(ms and ms / ours), "yes" if net["sha256"] == one["sha256"] else "NO"])
+        plot.append((pair, full["output_points"], net["output_points"], area_ideal))
+    write("net", ["pair", "d", "points (all candidates)", "points (net)", "points / ideal", "min spacing / d",
+                  "worst coverage / d", "exactness failures / shells covered", "CD queries (all)",
+                  "CD queries (net)", "candidates covered (untested)", "all s", "net s", "Nef s", "Nef / net",
+                  "Manifold s", "Manifold / net", "1 = 2 threads"], rows,
+          "Issue 10. 2 threads, d a fraction of the diagonal of the sum's box. Points / ideal: ideal = area of the "
+          "exact boundary (Nef; Manifold's mesh of the sum where Nef does not finish) / (2.598 d^2). Spacing, "
+          "coverage and exactness from `pmsum validate` (Nef) on the default output. Nef: CGAL minkowski_sum_3, one "
+          f"thread; Manifold {MANIFOLD_VERSION} (npm manifold-3d). Targets: points <= 8 x ideal, faster than Nef and "
+          "Manifold on every pair, >= 100 x Nef where Nef takes >= 10 s, goal pairs <= 3 s.")
+    fig, ax = plt.subplots(figsize=(10, 4.5))
+    x = range(len(plot))
+    ax.bar([i - 0.2 for i in x], [p[1] for p in plot], 0.4, label="all boundary candidates")
+    ax.bar([i + 0.2 for i in x], [p[2] for p in plot], 0.4, label="default: (d/2, d)-net")
+    ax.plot(list(x), [p[3] or float("nan") for p in plot], "k_", markersize=14, label="ideal d-covering")
+    ax.set_ylabel("output points")
+    log_bars_per_pair(ax, [p[0] for p in plot])
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "net.png"))
 
 
 def bench_filters(run):
@@ -260,7 +335,8 @@ def bench_threads(run):
     fig.savefig(os.path.join(RESULTS, "threads.png"))
 
 
-def manifold_seconds(run, pair):
+def manifold(run, pair):
+    """Manifold's minkowskiSum on the pair: {"seconds", "surface_area", ...}, or None."""
     if not os.path.exists(os.path.join(NODE, "node_modules", "manifold-3d")):
         os.makedirs(NODE, exist_ok=True)
         subprocess.run(["npm", "install", "--prefix", NODE, "--no-audit", "--no-fund", f"manifold-3d@{MANIFOLD_VERSION}"],
@@ -269,13 +345,20 @@ def manifold_seconds(run, pair):
     with open(os.path.join(HERE, "speed", "manifold_minkowski.mjs")) as src, open(script, "w") as dst:
         dst.write(src.read())
     ps, qs, args = PAIRS[pair]
-    scale = args[1] if args else "1"
+    if "--negate-p" in args:
+        return None  # the script sums P, not -P
+    scale = args[args.index("--scale-q") + 1] if "--scale-q" in args else "1"
     try:
         out = subprocess.run(["node", script, run.path(ps), run.path(qs), scale], capture_output=True, text=True,
                              timeout=600, check=True)
-        return json.loads(out.stdout)["seconds"]
+        return json.loads(out.stdout)
     except (subprocess.SubprocessError, ValueError):
         return None
+
+
+def manifold_seconds(run, pair):
+    m = manifold(run, pair)
+    return m and m["seconds"]
 
 
 def bench_peers(run):
@@ -435,7 +518,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--only", nargs="*",
-                    default=["filters", "octree", "multiresolution", "threads", "goals", "peers", "pd", "plan"])
+                    default=["net", "filters", "octree", "multiresolution", "threads", "goals", "peers", "pd", "plan"])
     args = ap.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     run = Runner(args.build)

@@ -325,6 +325,8 @@ const char* const sum_options_help =
   "  --no-normal-filter     test every sample pair with the CD filter (slow)\n"
   "  --no-cd-filter         keep every candidate of the normal filter (not all on the boundary)\n"
   "  --no-octree-filter     CD-test candidates in cells certified interior too (same output, slower)\n"
+  "  --all-candidates       every boundary candidate (the paper's output), not the default\n"
+  "                         (d/2, d)-net: many times more points, and slower\n"
   "  --levels D1,D2,...     coarse to fine: first the larger covering distances D1 > D2 > ... > D\n"
   "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
   "                         K to OUT with .levelK before the extension (validate: the last)\n"
@@ -332,7 +334,7 @@ const char* const sum_options_help =
   "  --force                run even if the estimated output exceeds the available memory\n"
   "  --quiet                no notes and no progress bar\n";
 const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
-const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter",
+const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter", "--all-candidates",
                                             "--force", "--quiet", "--help", "-h"};
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
@@ -351,7 +353,7 @@ struct Sum_input
   std::string p_path, q_path;
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
-  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, force = false, quiet = false;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, force = false, quiet = false;
   int threads = 0; // 0: all cores
   std::vector<double> coarser_d; // --levels: coarser covering distances, coarse to fine (absolute)
 };
@@ -370,6 +372,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.normal_filter = !args.flag("--no-normal-filter");
   in.cd_filter = !args.flag("--no-cd-filter");
   in.octree_filter = !args.flag("--no-octree-filter");
+  in.covering_net = !args.flag("--all-candidates");
   in.force = args.flag("--force");
   if (args.has("--threads")) {
     const double t = args.number("--threads");
@@ -437,6 +440,7 @@ inline std::vector<Record> compute_sum(
   const auto np = CGAL::parameters::use_normal_filter(in.normal_filter)
                     .use_cd_filter(in.cd_filter)
                     .use_octree_filter(in.octree_filter)
+                    .use_covering_net(in.covering_net)
                     .negate_first_mesh(in.negate)
                     .statistics(stats)
                     .maximum_number_of_candidates(limit)
@@ -487,7 +491,8 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("faces", in.P.number_of_faces()).integer("samples", stats.samples_p);
   jq.str("file", in.q_path).integer("vertices", in.Q.number_of_vertices())
     .integer("faces", in.Q.number_of_faces()).integer("samples", stats.samples_q);
-  filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter).boolean("octree", in.octree_filter);
+  filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter).boolean("octree", in.octree_filter)
+    .boolean("covering_net", in.covering_net);
   Json j;
   const unsigned cores = std::thread::hardware_concurrency();
   j.object("p", jp).object("q", jq).integer("threads", in.threads ? std::size_t(in.threads) : std::size_t(cores ? cores : 1))
@@ -496,6 +501,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("feature_pairs", stats.feature_pairs).integer("candidates", stats.candidates)
     .integer("octree_leaves", stats.octree_leaves).integer("octree_certified_leaves", stats.octree_certified_leaves)
     .integer("candidates_certified", stats.candidates_certified).integer("candidates_reused", stats.candidates_reused)
+    .integer("candidates_covered", stats.candidates_covered)
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
     .integer("containment_tests", stats.containment_tests).integer("output_points", stats.output_points);
   return j;

@@ -189,6 +189,24 @@ inline Soup transformed(Soup s, double scale, const Point& shift = {0, 0, 0})
   return s;
 }
 
+/// Turns a soup by the rotation of the quaternion (2, 1, 1, 1) (about the axis (1, 1, 1) by
+/// about 44.4 degrees) and scales it by 7/8: the matrix is M / 8 with M integer, so a soup
+/// with small dyadic coordinates keeps exact coordinates, coplanar faces stay coplanar and
+/// touching faces keep touching. Its pieces are no longer axis-aligned boxes.
+inline Soup rotated(Soup s)
+{
+  static const int M[3][3] = {{3, -2, 6}, {6, 3, -2}, {-2, 6, 3}}; // 7 x a rotation matrix
+  auto f = [](Point& p) {
+    Point r{};
+    for (int i = 0; i < 3; ++i) r[i] = (M[i][0] * p[0] + M[i][1] * p[1] + M[i][2] * p[2]) / 8;
+    p = r;
+  };
+  for (auto& p : s.points) f(p);
+  for (auto& piece : s.convex_pieces) for (auto& p : piece) f(p);
+  s.boxes.clear();
+  return s;
+}
+
 } // namespace pmsum_test
 
 #endif // CGAL_PMSUM_TEST_SHAPES_H

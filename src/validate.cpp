@@ -89,6 +89,8 @@ int command_validate(int argc, char** argv)
   std::vector<K::Point_3> points;
   for (const Record& r : records) points.push_back(r.point);
   const auto coverage = CGAL::Pmsum::measure_boundary_coverage(shells, points, in.d, in.d / 8);
+  const double spacing = CGAL::Pmsum::measure_point_spacing(points) / in.d;
+  const double ideal = CGAL::Pmsum::ideal_covering_size(CGAL::Pmsum::shells_area(shells), in.d);
   const double check_seconds = seconds_since(t_check);
 
   if (args.has("--shell-points")) {
@@ -136,7 +138,9 @@ int command_validate(int argc, char** argv)
             << "  points            " << records.size() << "\n"
             << "  exactness         " << off_boundary << " points not on the exact boundary\n"
             << "  shells            " << coverage.size() << " (" << voids << " voids), " << covered << " covered within d\n"
-            << "  worst coverage    " << worst << " d\n";
+            << "  worst coverage    " << worst << " d\n"
+            << "  minimum spacing   " << spacing << " d\n"
+            << "  points / ideal    " << double(records.size()) / ideal << " (ideal: area / (2.598 d^2) = " << ideal << ")\n";
   for (std::size_t i = 0; i < coverage.size(); ++i)
     std::cout << "    shell " << i << (coverage[i].is_void ? " (void) " : " (outer) ") << coverage[i].triangles
               << " triangles: worst " << coverage[i].worst_distance / in.d << " d, "
@@ -162,7 +166,8 @@ int command_validate(int argc, char** argv)
     seconds.num("ours", ours_seconds).num("nef", ref->seconds()).num("checks", check_seconds).num("total", seconds_since(t_start));
     j.str("command", "validate").integer("exactness_failures", off_boundary)
       .integer("shells", coverage.size()).integer("void_shells", voids).integer("shells_covered", covered)
-      .num("worst_coverage_over_d", worst).add("shell_coverage", arr).boolean("nef_from_file", args.has("--exact"))
+      .num("worst_coverage_over_d", worst)
+      .num("minimum_spacing_over_d", spacing).num("ideal_points", ideal).num("points_over_ideal", double(records.size()) / ideal).add("shell_coverage", arr).boolean("nef_from_file", args.has("--exact"))
       .object("seconds", seconds).boolean("ok", ok);
     write_json(args.values.at("--json"), j);
   }

@@ -12,23 +12,21 @@ using namespace pmsum_test;
 
 namespace {
 
+/// Both outputs, the default net and every boundary candidate: exact and covering.
 void check_convex(const Soup& P, const Soup& Q, double d, bool negate = false)
 {
-  const Result r = run(P, Q, d, CGAL::parameters::negate_first_mesh(negate));
-  const Reference ref(P, Q, negate);
-  INFO("points " << r.points.size() << ", candidates " << r.stats.candidates);
-  REQUIRE(!r.points.empty());
-  CHECK(exactness_failures(r, ref) == 0);
-  // Convex operands: every candidate kept by the normal filter is on the boundary.
-  CHECK(r.points.size() == r.stats.candidates);
-  const double cover = coverage_distance(ref.boundary_samples(d / 8), r.points);
-  INFO("coverage " << cover / d << " d");
-  CHECK(cover < d);
+  const auto [net, all] = check_net_and_all(P, Q, d, Reference(P, Q, negate), CGAL::parameters::negate_first_mesh(negate));
   // The rounded output points are the exact ones, rounded.
-  for (std::size_t i = 0; i < r.points.size(); ++i)
-    REQUIRE(CGAL::squared_distance(r.points[i], IK::Point_3(CGAL::to_double(r.exact[i].x()),
-                                                             CGAL::to_double(r.exact[i].y()),
-                                                             CGAL::to_double(r.exact[i].z()))) < 1e-24);
+  for (const Result* r : {&net, &all})
+    for (std::size_t i = 0; i < r->points.size(); ++i)
+      REQUIRE(CGAL::squared_distance(r->points[i], IK::Point_3(CGAL::to_double(r->exact[i].x()),
+                                                                CGAL::to_double(r->exact[i].y()),
+                                                                CGAL::to_double(r->exact[i].z()))) < 1e-24);
+  // Convex operands: every candidate kept by the normal filter is on the boundary.
+  CHECK(all.points.size() == all.stats.candidates);
+  // The net saves collision tests: what it covers is never tested.
+  CHECK(net.stats.candidates_covered > 0);
+  CHECK(net.stats.cd_queries < all.stats.cd_queries);
 }
 
 } // namespace
@@ -150,7 +148,9 @@ TEST_CASE("statistics add up", "[convex][statistics]")
   CHECK(r.stats.output_points == r.points.size());
   CHECK(r.stats.samples_p > 12);
   CHECK(r.stats.samples_q > 6);
-  CHECK(r.stats.cd_queries >= r.stats.candidates);
+  // Convex: no candidate is inner, so each is either covered by the net or tested.
+  CHECK(r.stats.cd_queries + r.stats.candidates_covered >= r.stats.candidates);
+  CHECK(r.stats.candidates_covered > 0);
   CHECK(r.stats.feature_pairs > 0);
 }
 
@@ -159,19 +159,23 @@ TEST_CASE("Parallel_tag gives the same points in the same order", "[parallel]")
 #ifdef CGAL_LINKED_WITH_TBB
   const Mesh mp = to_mesh<Mesh>(l_shape()), mq = to_mesh<Mesh>(random_convex(12, 5));
   for (bool negate : {false, true}) {
-    std::vector<Record> seq, par;
-    CGAL::Pmsum::Statistics s1, s2;
-    CGAL::point_minkowski_sum<CGAL::Sequential_tag>(mp, mq, 0.1, std::back_inserter(seq),
-                                                     CGAL::parameters::negate_first_mesh(negate).statistics(s1));
-    CGAL::point_minkowski_sum<CGAL::Parallel_tag>(mp, mq, 0.1, std::back_inserter(par),
-                                                   CGAL::parameters::negate_first_mesh(negate).statistics(s2));
-    REQUIRE(seq.size() > 1000);
-    REQUIRE(seq.size() == par.size());
-    for (std::size_t i = 0; i < seq.size(); ++i) {
-      REQUIRE(seq[i].point == par[i].point);
-      REQUIRE(seq[i].normal == par[i].normal);
+    for (bool net : {true, false}) {
+      INFO((net ? "net" : "all candidates") << (negate ? ", negated" : ""));
+      std::vector<Record> seq, par;
+      CGAL::Pmsum::Statistics s1, s2;
+      CGAL::point_minkowski_sum<CGAL::Sequential_tag>(
+        mp, mq, 0.05, std::back_inserter(seq), CGAL::parameters::negate_first_mesh(negate).use_covering_net(net).statistics(s1));
+      CGAL::point_minkowski_sum<CGAL::Parallel_tag>(
+        mp, mq, 0.05, std::back_inserter(par), CGAL::parameters::negate_first_mesh(negate).use_covering_net(net).statistics(s2));
+      REQUIRE(seq.size() > 1000);
+      REQUIRE(seq.size() == par.size());
+      for (std::size_t i = 0; i < seq.size(); ++i) {
+        REQUIRE(seq[i].point == par[i].point);
+        REQUIRE(seq[i].normal == par[i].normal);
+      }
+      // Waves do not depend on the threads, nor does what is tested in them.
+      CHECK(s1.cd_queries == s2.cd_queries);
     }
-    CHECK(s1.cd_queries == s2.cd_queries);
   }
 #else
   WARN("built without TBB: CGAL::Parallel_tag is unavailable");

@@ -10,18 +10,11 @@ using namespace pmsum_test;
 
 namespace {
 
-/// Runs P + Q and checks exactness and coverage against the union-of-pieces reference.
+/// Runs P + Q and checks exactness and coverage against the union-of-pieces reference, for
+/// the default net and for every boundary candidate; returns the latter.
 Result check(const Soup& P, const Soup& Q, double d)
 {
-  const Result r = run(P, Q, d);
-  const Reference ref(P, Q);
-  INFO("points " << r.points.size() << ", candidates " << r.stats.candidates);
-  REQUIRE(!r.points.empty());
-  CHECK(exactness_failures(r, ref) == 0);
-  const double cover = coverage_distance(ref.boundary_samples(d / 8), r.points);
-  INFO("coverage " << cover / d << " d");
-  CHECK(cover < d);
-  return r;
+  return check_net_and_all(P, Q, d, Reference(P, Q)).second;
 }
 
 /// Number of points strictly inside the open box (lo, hi).
@@ -89,8 +82,8 @@ TEST_CASE("the normal filter removes only pairs the CD filter would not need", "
 {
   const Soup P = l_shape(), Q = tetrahedron(0.6);
   const double d = 0.2;
-  const Result on = run(P, Q, d);
-  const Result off = run(P, Q, d, CGAL::parameters::use_normal_filter(false));
+  const Result on = run(P, Q, d, CGAL::parameters::use_covering_net(false));
+  const Result off = run(P, Q, d, CGAL::parameters::use_normal_filter(false).use_covering_net(false));
   const Reference ref(P, Q);
   REQUIRE(off.stats.candidates > 3 * on.stats.candidates);
   CHECK(exactness_failures(off, ref) == 0);
@@ -235,34 +228,43 @@ TEST_CASE("coarse to fine: every level exact and covering, coarser points reused
   const Mesh mp = to_mesh<Mesh>(P), mq = to_mesh<Mesh>(Q);
   const Reference ref(P, Q);
   const std::vector<double> ds = {0.4, 0.2, 0.1};
-  std::vector<std::vector<Record>> levels;
-  std::vector<CGAL::Pmsum::Statistics> stats;
-  CGAL::point_minkowski_sum_coarse_to_fine(mp, mq, ds, [&](std::size_t k, const CGAL::Pmsum::Statistics& s,
-                                                           std::vector<Record>&& records) {
-    CHECK(k == levels.size());
-    levels.push_back(std::move(records));
-    stats.push_back(s);
-  });
-  REQUIRE(levels.size() == ds.size());
-  std::set<std::tuple<double, double, double>> previous;
-  for (std::size_t k = 0; k < ds.size(); ++k) {
-    INFO("level " << k << ": " << levels[k].size() << " points, " << stats[k].candidates_reused << " reused");
-    Result r;
-    for (const Record& rec : levels[k]) {
-      r.points.push_back(rec.point);
-      r.exact.push_back(CGAL::Pmsum::exact_point<EK>(rec, get(CGAL::vertex_point, mp), get(CGAL::vertex_point, mq)));
+  for (bool net : {true, false}) {
+    INFO((net ? "net" : "all candidates"));
+    std::vector<std::vector<Record>> levels;
+    std::vector<CGAL::Pmsum::Statistics> stats;
+    CGAL::point_minkowski_sum_coarse_to_fine(
+      mp, mq, ds,
+      [&](std::size_t k, const CGAL::Pmsum::Statistics& s, std::vector<Record>&& records) {
+        CHECK(k == levels.size());
+        levels.push_back(std::move(records));
+        stats.push_back(s);
+      },
+      CGAL::parameters::use_covering_net(net));
+    REQUIRE(levels.size() == ds.size());
+    std::set<std::tuple<double, double, double>> previous;
+    for (std::size_t k = 0; k < ds.size(); ++k) {
+      INFO("level " << k << ": " << levels[k].size() << " points, " << stats[k].candidates_reused << " reused");
+      Result r;
+      for (const Record& rec : levels[k]) {
+        r.points.push_back(rec.point);
+        r.exact.push_back(CGAL::Pmsum::exact_point<EK>(rec, get(CGAL::vertex_point, mp), get(CGAL::vertex_point, mq)));
+      }
+      CHECK(exactness_failures(r, ref) == 0);
+      CHECK(coverage_distance(ref.boundary_samples(ds[k] / 8), r.points) < ds[k]);
+      CHECK(stats[k].output_points == levels[k].size());
+      if (net) CHECK(CGAL::Pmsum::measure_point_spacing(r.points) >= ds[k] / 2 * (1 - 1e-9));
+      std::set<std::tuple<double, double, double>> here;
+      for (const auto& p : r.points) here.insert({p.x(), p.y(), p.z()});
+      // Every coarser point is a point of the finer level again.
+      for (const auto& p : previous) CHECK(here.count(p) == 1);
+      // The coarser decisions are reused: without the net, every coarser candidate's but
+      // those certified interior (they are certified again).
+      if (k > 0) {
+        CHECK(stats[k].candidates_reused > 0);
+        if (!net) CHECK(stats[k].candidates_reused + stats[k - 1].candidates_certified >= stats[k - 1].candidates);
+      }
+      previous = here;
     }
-    CHECK(exactness_failures(r, ref) == 0);
-    CHECK(coverage_distance(ref.boundary_samples(ds[k] / 8), r.points) < ds[k]);
-    CHECK(stats[k].output_points == levels[k].size());
-    std::set<std::tuple<double, double, double>> here;
-    for (const auto& p : r.points) here.insert({p.x(), p.y(), p.z()});
-    // Every coarser boundary point is a candidate again, reused, and still a boundary point.
-    for (const auto& p : previous) CHECK(here.count(p) == 1);
-    if (k > 0) {
-      CHECK(stats[k].candidates_reused >= stats[k - 1].candidates);
-    }
-    previous = here;
   }
   // The covering distances must decrease.
   CHECK_THROWS_AS(CGAL::point_minkowski_sum_coarse_to_fine(mp, mq, std::vector<double>{0.1, 0.2},

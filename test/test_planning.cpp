@@ -153,7 +153,7 @@ TEST_CASE("robot in a pocket under a lid (paper Fig. 12(b)): taken out", "[plann
   CHECK(chimney);
   const auto& st = planner.statistics();
   CHECK(st.edges_checked > 0);
-  CHECK(st.nodes > 1000);
+  CHECK(st.nodes > 500); // the default net with every vertex + vertex contact: about 590 nodes
   CHECK(st.nodes_rejected == 0); // box coordinates: every contact point is exact in double
 }
 

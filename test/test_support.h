@@ -8,11 +8,16 @@
 
 #include "reference.h"
 
+#include <CGAL_pmsum/measure_boundary_coverage.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
 #include <CGAL/Surface_mesh.h>
 
+#include <catch2/catch.hpp>
+
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace pmsum_test {
@@ -48,6 +53,51 @@ inline std::size_t exactness_failures(const Result& r, const Reference& ref)
   std::size_t bad = 0;
   for (const auto& x : r.exact) bad += !ref.on_boundary(x);
   return bad;
+}
+
+/// Runs P + Q twice, with the default net and with every boundary candidate
+/// (use_covering_net(false)), with the parameters `np` (a CGAL_pmsum parameter first); checks
+/// both for exactness and coverage against `ref`, and the net against the candidates.
+/// Returns {net, all}.
+template <class NP = decltype(CGAL::parameters::use_normal_filter(true))>
+std::pair<Result, Result> check_net_and_all(const Soup& P, const Soup& Q, double d, const Reference& ref,
+                                            const NP& np = CGAL::parameters::use_normal_filter(true));
+
+/// The default output `net` against every boundary candidate `all` (use_covering_net(false)):
+/// a subset, no two points closer than d/2 (up to the rounding margin), and every boundary
+/// candidate closer than d/2 to one of its points.
+inline void check_covering_net(const std::vector<IK::Point_3>& net, const std::vector<IK::Point_3>& all, double d)
+{
+  INFO("net " << net.size() << " points of " << all.size() << " boundary candidates");
+  REQUIRE(!net.empty());
+  std::set<std::tuple<double, double, double>> candidates;
+  for (const auto& p : all) candidates.insert({p.x(), p.y(), p.z()});
+  std::size_t outside = 0;
+  for (const auto& p : net) outside += candidates.count({p.x(), p.y(), p.z()}) == 0;
+  CHECK(outside == 0);
+  const double spacing = CGAL::Pmsum::measure_point_spacing(net);
+  INFO("minimum spacing " << spacing / d << " d");
+  CHECK(spacing >= d / 2 * (1 - 1e-9));
+  const double cover = coverage_distance(all, net);
+  INFO("boundary candidates within " << cover / d << " d of the net");
+  CHECK(cover < d / 2);
+}
+
+template <class NP>
+std::pair<Result, Result> check_net_and_all(const Soup& P, const Soup& Q, double d, const Reference& ref, const NP& np)
+{
+  const auto samples = ref.boundary_samples(d / 8);
+  std::pair<Result, Result> r{run(P, Q, d, np.use_covering_net(true)), run(P, Q, d, np.use_covering_net(false))};
+  for (const Result* x : {&r.first, &r.second}) {
+    INFO((x == &r.first ? "net: " : "all candidates: ") << x->points.size() << " points, candidates " << x->stats.candidates);
+    REQUIRE(!x->points.empty());
+    CHECK(exactness_failures(*x, ref) == 0);
+    const double cover = coverage_distance(samples, x->points);
+    INFO("coverage " << cover / d << " d");
+    CHECK(cover < d);
+  }
+  check_covering_net(r.first.points, r.second.points, d);
+  return r;
 }
 
 } // namespace pmsum_test

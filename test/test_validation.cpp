@@ -169,6 +169,37 @@ TEST_CASE("the octree filter skips only inner candidates: same output, holes inc
   }
 }
 
+TEST_CASE("boxes on boxes under a non-round rotation: the default net is exact, covering and spaced", "[validation][net]")
+{
+  // Two layers of boxes: the paper's blocks, and boxes that sit on them across their
+  // corners, so that many large faces touch and overlap in common planes; every plane of the
+  // scene is turned off the axes. The exact sum is computed live by Nef.
+  Soup scene = blocks(3, 1);
+  for (const auto& lo : std::vector<Point>{{0.5, 0.5, 1}, {1.5, 1.5, 1}, {0.5, 1.5, 1}})
+    scene.append(box(lo, {lo[0] + 1, lo[1] + 1, 1.5}));
+  const Mesh P = to_mesh<Mesh>(rotated(scene));
+  const Mesh Q = to_mesh<Mesh>(rotated(box({0, 0, 0}, {0.5, 0.25, 0.75})));
+  const Reference_nef ref(P, Q, false);
+  const double d = 0.03 * sum_diagonal(P, Q);
+  const Outcome o = validate(P, Q, d, ref);
+  INFO("points " << o.points << ", shells " << o.shells << ", worst coverage " << o.worst << " d");
+  CHECK(o.off_boundary == 0);
+  CHECK(o.covered == o.shells);
+  std::vector<IK::Point_3> net, all;
+  CGAL::Pmsum::Statistics s_net, s_all;
+  for (auto [out, net_on, stats] : {std::tuple{&net, true, &s_net}, std::tuple{&all, false, &s_all}}) {
+    std::vector<Record> records;
+    CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records),
+                              CGAL::parameters::use_covering_net(net_on).statistics(*stats));
+    for (const Record& r : records) out->push_back(r.point);
+  }
+  REQUIRE(net.size() == o.points);
+  check_covering_net(net, all, d);
+  INFO("CD queries: " << s_net.cd_queries << " with the net, " << s_all.cd_queries << " without");
+  CHECK(2 * s_net.cd_queries < s_all.cd_queries);
+  CHECK(4 * net.size() < all.size());
+}
+
 #include <CGAL_pmsum/Penetration_depth.h>
 
 #include <CGAL/AABB_traits.h>

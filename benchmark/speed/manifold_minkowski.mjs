@@ -1,5 +1,5 @@
 // Times Manifold's minkowskiSum (npm manifold-3d) on two OFF triangle meshes.
-//   node manifold_minkowski.mjs P.off Q.off [scale_q]   -> one JSON line on stdout
+//   node manifold_minkowski.mjs P.off Q.off [scale_q]   -> one JSON line on stdout (seconds, area of the sum)
 import fs from 'node:fs';
 import Module from 'manifold-3d';
 
@@ -40,5 +40,6 @@ const P = load(p, 1), Q = load(q, s ? +s : 1);
 const t1 = performance.now();
 const sum = P.minkowskiSum(Q);
 const t2 = performance.now();
+const area = typeof sum.surfaceArea === 'function' ? sum.surfaceArea() : null;
 console.log(JSON.stringify({ seconds_load: (t1 - t0) / 1000, seconds: (t2 - t1) / 1000, triangles: sum.numTri(),
-                             status: sum.status() }));
+                             surface_area: area, status: sum.status() }));

@@ -21,10 +21,11 @@ struct Statistics
   std::size_t octree_certified_leaves = 0;  ///< of them, certified interior by the octree filter
   std::size_t candidates_certified = 0;     ///< candidates in certified cells: never CD-tested
   std::size_t candidates_reused = 0;        ///< coarse to fine: decided by the coarser level
+  std::size_t candidates_covered = 0;       ///< closer than d/2 to an output point: never CD-tested
   std::size_t cd_queries = 0;               ///< collision tests (one per candidate and direction tried)
   std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests inside them
   std::size_t containment_tests = 0;        ///< exact point-in-solid tests inside them
-  std::size_t output_points = 0;
+  std::size_t output_points = 0;            ///< the (d/2, d)-net, or every boundary candidate
   double seconds_setup = 0;                 ///< input checks, sampling resolutions, AABB trees
   double seconds_normal_filter = 0;
   double seconds_octree_filter = 0;         ///< interior certificate and leaf cells

@@ -106,8 +106,12 @@ public:
     Translational_motion_planner pl(P, Q, d, k);
     Statistics stats;
     std::vector<std::pair<Point, Point>> contacts; // point, outward direction
+    // The default net, plus every vertex + vertex contact: the corners of a passage, where a
+    // path turns, are such points, and a net may cover them from a node that sees no corner.
+    internal::Pipeline_options options;
+    options.keep_vertex_sums = true;
     internal::run_pipeline<ConcurrencyTag>(
-      *pl.m_minus_p, *pl.m_q, d, internal::Pipeline_options{}, stats,
+      *pl.m_minus_p, *pl.m_q, d, options, stats,
       [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction& dir) {
         Point x;
         for (int c = 0; c < 3; ++c)
@@ -289,13 +293,14 @@ private:
       m_tree->build();
     }
     std::vector<std::pair<Index, Index>> pairs;
-    // The k nearest, and all (up to 4k) within the covering distance d: a passage's few
-    // nodes are then joined to the denser nodes around its mouth.
+    // The k nearest, and all (up to 4k) within 2d: the contact points are a d-covering, so
+    // nodes whose covered regions meet are at most 2d apart. A passage's few nodes are then
+    // joined to the nodes around its mouth.
     for (Index i = 0; i < m_nodes.size(); ++i) {
       const std::vector<Index> near = nearest(m_nodes[i].p, 4 * m_k + 1);
       for (std::size_t r = 0; r < near.size(); ++r) {
         const Index j = near[r];
-        if (j == i || (r > m_k && distance(m_nodes[i].p, m_nodes[j].p) > m_d)) continue;
+        if (j == i || (r > m_k && distance(m_nodes[i].p, m_nodes[j].p) > 2 * m_d)) continue;
         pairs.emplace_back((std::min)(i, j), (std::max)(i, j));
       }
     }

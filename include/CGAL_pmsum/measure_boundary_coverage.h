@@ -40,6 +40,25 @@ struct Shell_coverage
   bool covered(double d) const { return worst_distance < d; }
 };
 
+namespace internal {
+/// The points as Epick points, and a kd-tree over them.
+struct Point_search
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Traits = CGAL::Search_traits_3<K>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  std::vector<K::Point_3> points;
+  Search::Tree tree;
+  template <class PointRange>
+  explicit Point_search(const PointRange& range)
+  {
+    for (const auto& p : range)
+      points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    tree.insert(points.begin(), points.end());
+  }
+};
+} // namespace internal
+
 /// Samples every triangle of every shell with the closed lattice of spacing at most
 /// `spacing` (vertices and edges included) and returns, per shell, the largest distance to
 /// the nearest point of `points`, and how many samples have a point closer than `d`.
@@ -48,12 +67,11 @@ template <class PointRange>
 std::vector<Shell_coverage> measure_boundary_coverage(const std::vector<Shell>& shells, const PointRange& points,
                                                      double d, double spacing)
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Traits = CGAL::Search_traits_3<K>;
-  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
-  std::vector<K::Point_3> pts;
-  for (const auto& p : points) pts.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  Search::Tree tree(pts.begin(), pts.end());
+  using K = internal::Point_search::K;
+  using Search = internal::Point_search::Search;
+  const internal::Point_search index(points);
+  const auto& pts = index.points;
+  const auto& tree = index.tree;
 
   std::vector<Shell_coverage> out;
   for (const Shell& s : shells) {
@@ -85,6 +103,41 @@ std::vector<Shell_coverage> measure_boundary_coverage(const std::vector<Shell>& 
   }
   return out;
 }
+
+/// The smallest distance between two of `points` (infinity for fewer than two points).
+template <class PointRange>
+double measure_point_spacing(const PointRange& points)
+{
+  using Search = internal::Point_search::Search;
+  const internal::Point_search index(points);
+  double best = std::numeric_limits<double>::infinity();
+  if (index.points.size() < 2) return best;
+  for (const auto& x : index.points) {
+    Search search(index.tree, x, 2); // x itself, then its nearest other point
+    auto it = search.begin();
+    ++it;
+    best = (std::min)(best, std::sqrt(it->second));
+  }
+  return best;
+}
+
+/// Total area of the shells.
+inline double shells_area(const std::vector<Shell>& shells)
+{
+  double area = 0;
+  for (const Shell& s : shells)
+    for (const auto& t : s.triangles) {
+      const auto &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
+      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    }
+  return area;
+}
+
+/// Number of points of an ideal d-covering of a surface of area `area`: the hexagonal
+/// covering, one point per hexagon of circumradius d (area 2.598 d^2).
+inline double ideal_covering_size(double area, double d) { return area / (1.5 * std::sqrt(3.0) * d * d); }
 
 } // namespace Pmsum
 } // namespace CGAL

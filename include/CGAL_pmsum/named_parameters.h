@@ -22,6 +22,7 @@ namespace internal_np {
 enum use_normal_filter_t { use_normal_filter };
 enum use_cd_filter_t { use_cd_filter };
 enum use_octree_filter_t { use_octree_filter };
+enum use_covering_net_t { use_covering_net };
 enum negate_first_mesh_t { negate_first_mesh };
 enum statistics_t { statistics };
 enum treat_as_surface_t { treat_as_surface };
@@ -67,6 +68,12 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<bool, internal_np::use_octree_filter_t, Named_parameters>
   use_octree_filter(bool b) const { return {b, *this}; }
 
+  /// Output a (d/2, d)-net of the boundary candidates (default `true`): a d-covering of the
+  /// boundary with no two points closer than d/2, whose candidates near an output point are
+  /// not CD-tested. `false`: every boundary candidate, as in the paper (many more points).
+  Named_parameters<bool, internal_np::use_covering_net_t, Named_parameters>
+  use_covering_net(bool b) const { return {b, *this}; }
+
   /// Compute the boundary of (-P) + Q instead of P + Q (default `false`): the contact space
   /// of a robot P translating among obstacles Q.
   Named_parameters<bool, internal_np::negate_first_mesh_t, Named_parameters>
@@ -88,6 +95,10 @@ use_cd_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np:
 /// \copydoc CGAL::Pmsum::Named_parameters::use_octree_filter
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_octree_filter_t>
 use_octree_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_octree_filter_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::use_covering_net
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_covering_net_t>
+use_covering_net(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_covering_net_t>(b); }
 
 /// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>

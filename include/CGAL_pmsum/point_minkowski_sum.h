@@ -5,12 +5,16 @@
 // triangle meshes (J.-M. Lien, "Covering Minkowski sum boundary using points with
 // applications", CAGD 2008), every point exactly on the boundary.
 //
-// Pipeline (one header per stage in internal/):
+// Pipeline (one header per stage in internal/; pipeline.h wires them):
 //   mesh_data.h      input checks, flat exact copy of P (or -P) and Q
-//   sampling.h       d-coverings of every vertex, edge and facet, with origins
+//   sampling.h       d/2-coverings of every vertex, edge and facet, with origins
 //   normal_filter.h  feature pairs whose sums can be on the boundary, and their directions
+//   candidates.h     the candidates p + q of the kept pairs, in canonical order
+//   octree_filter.h  octree cells of candidates certified inside the sum
+//   decision.h       each candidate: reused, certified inner, covered by the net, or CD-tested
 //   cd_filter.h      exact collision test of (-P + x) against Q, symbolically perturbed
-//   pipeline.h       runs them: candidates of the kept pairs, CD filter, emit (in parallel)
+//   covering_net.h   the output: a (d/2, d)-net of the boundary candidates
+//   parallel.h       waves of feature pairs decided in parallel, committed in canonical order
 //   and this file    named parameters, the input stage, and the output records
 
 #ifndef CGAL_PMSUM_POINT_MINKOWSKI_SUM_H
@@ -84,6 +88,7 @@ struct Prepared_sum
     options.use_normal_filter = choose_parameter(get_parameter(np_p, internal_np::use_normal_filter), true);
     options.use_cd_filter = choose_parameter(get_parameter(np_p, internal_np::use_cd_filter), true);
     options.use_octree_filter = choose_parameter(get_parameter(np_p, internal_np::use_octree_filter), true);
+    options.use_covering_net = choose_parameter(get_parameter(np_p, internal_np::use_covering_net), true);
     options.max_candidates =
       choose_parameter(get_parameter(np_p, internal_np::maximum_number_of_candidates), std::size_t(-1));
     options.callback =
@@ -137,7 +142,11 @@ struct Prepared_sum
 ///
 /// Every output point lies exactly on the boundary (decided with exact predicates and a
 /// symbolic perturbation, no tolerance), and the output is a `d`-covering of the boundary:
-/// every boundary point has an output point closer than `d`. The samples of P and Q are
+/// every boundary point has an output point closer than `d`. By default it is a
+/// (d/2, d)-net: no two output points are closer than `d/2` (up to a margin of a few hundred
+/// units in the last place of the largest coordinate), and candidates closer than `d/2` to an
+/// output point are never CD-tested; `use_covering_net(false)` gives every boundary candidate
+/// instead (the paper's output, many times larger). The samples of P and Q are
 /// `d/2`-coverings, which leaves room for the boundary's concave creases, where the
 /// paper's Theorem 2 alone would not guarantee `d`. Exception: in passages of the sum
 /// narrower than the sample spacing, a boundary facet can be a strip without samples
@@ -154,6 +163,7 @@ struct Prepared_sum
 /// \param d covering distance, > 0
 /// \param np_p named parameters for P and for the algorithm: `vertex_point_map`,
 ///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true), `use_octree_filter` (true),
+///        `use_covering_net` (true),
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,

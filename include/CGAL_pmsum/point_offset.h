@@ -116,8 +116,11 @@ OutputIterator point_erosion(const PolygonMesh& P, const StructuringMesh& B, dou
   using Point = typename K::Point_3;
   if (!CGAL::is_closed(P)) throw Invalid_input("point_erosion needs a closed mesh P");
   std::vector<Point> boundary;
+  // Every boundary candidate: the net is taken after the part inside P is chosen (a net of
+  // the whole boundary could cover a point inside P by one outside).
   point_minkowski_sum<ConcurrencyTag>(B, P, d, std::back_inserter(boundary),
-                                      parameters::negate_first_mesh(true), parameters::treat_as_surface(true));
+                                      parameters::negate_first_mesh(true).use_covering_net(false),
+                                      parameters::treat_as_surface(true));
   // Each point is at distance at least the inradius of B from the surface of P, so the
   // (exact-predicate) side test of its rounded position cannot err.
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -131,10 +134,17 @@ OutputIterator point_erosion(const PolygonMesh& P, const StructuringMesh& B, dou
   CGAL::copy_face_graph(P, copy, CGAL::parameters::vertex_point_map(
                                    boost::make_function_property_map<vertex_descriptor, Epick::Point_3>(to_double)));
   const CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Epick::Point_3>, Epick> side(copy);
-  for (const Point& x : boundary)
-    if (side(Epick::Point_3(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()))) ==
-        CGAL::ON_BOUNDED_SIDE)
-      *out++ = x;
+  std::vector<std::size_t> inside;
+  std::vector<internal::Point3> positions;
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    const internal::Point3 x = {CGAL::to_double(boundary[i].x()), CGAL::to_double(boundary[i].y()),
+                                CGAL::to_double(boundary[i].z())};
+    if (side(Epick::Point_3(x[0], x[1], x[2])) == CGAL::ON_BOUNDED_SIDE) {
+      inside.push_back(i);
+      positions.push_back(x);
+    }
+  }
+  for (std::size_t k : internal::greedy_net(positions, d)) *out++ = boundary[inside[k]];
   return out;
 }
 

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Stage 3a of the pipeline: the octree filter (paper section 6), complete.
+// A filter of the decision stage: the octree filter (paper section 6), complete.
 //
 // The paper floods an octree of cells of size d from seed points, so that interior regions
 // are never CD-tested; seeds for "difficult" holes (voids with no vertex + vertex point)
@@ -31,6 +31,7 @@
 #ifndef CGAL_PMSUM_INTERNAL_OCTREE_FILTER_H
 #define CGAL_PMSUM_INTERNAL_OCTREE_FILTER_H
 
+#include <CGAL_pmsum/internal/candidates.h>
 #include <CGAL_pmsum/internal/cd_filter.h>
 #include <CGAL_pmsum/internal/parallel.h>
 
@@ -47,8 +48,6 @@
 namespace CGAL {
 namespace Pmsum {
 namespace internal {
-
-using Point3 = std::array<double, 3>;
 
 inline double distance3(const Point3& a, const Point3& b)
 {
@@ -438,6 +437,65 @@ private:
   std::vector<Key> m_certified;
   std::size_t m_leaves = 0;
 };
+
+/// The octree filter's settings: a tolerance far above the rounding errors of the doubles
+/// of a sum of P and Q at covering distance d, and the box of the sum.
+struct Octree_settings
+{
+  Point3 lo, hi;
+  double tolerance;
+  Octree_settings(const Mesh_data& mp, const Mesh_data& mq, double d)
+  {
+    const auto bp = mesh_box(mp), bq = mesh_box(mq);
+    double scale = d;
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = bp.first[c] + bq.first[c];
+      hi[c] = bp.second[c] + bq.second[c];
+      scale = (std::max)({scale, std::abs(bp.first[c]), std::abs(bp.second[c]), std::abs(bq.first[c]),
+                          std::abs(bq.second[c]), std::abs(lo[c]), std::abs(hi[c])});
+    }
+    tolerance = 1e-9 * scale;
+  }
+  /// Grids of about candidates / 8 points each (between 12^3 and 64^3): their set-up costs
+  /// about as much as testing a tenth of the candidates would.
+  static int certificate_resolution(std::size_t candidates)
+  { return int(std::clamp(std::cbrt(double(candidates) / 8), 12.0, 64.0)); }
+};
+
+/// The octree filter of one level: the leaves holding the candidates of `pairs`, of size d
+/// as in the paper but small enough for the certificate's balls, certified. Empty if it
+/// cannot certify anything.
+inline std::optional<Octree_filter> make_level_octree(const Interior_certificate& certificate,
+                                                      const Octree_settings& settings, const Candidate_pairs& pairs,
+                                                      const Mesh_sampling& sp, const Mesh_sampling& sq, double d,
+                                                      bool parallel)
+{
+  const double leaf = std::clamp(certificate.largest_ball() / 4, d / 8, d);
+  std::optional<Octree_filter> octree(std::in_place, certificate, settings.lo, settings.hi, leaf, settings.tolerance);
+  if (!octree->enabled() || pairs.pairs.empty()) return std::nullopt;
+  // The leaves holding candidates, by chunks of pairs.
+  const std::size_t chunks = (std::min)(pairs.pairs.size(), std::size_t(256));
+  std::vector<std::vector<Octree_filter::Key>> leaves(chunks);
+  for_each_index(chunks, parallel, [&](std::size_t chunk) {
+    Pair_candidates candidates;
+    auto& out = leaves[chunk];
+    for (std::size_t i = chunk * pairs.pairs.size() / chunks; i < (chunk + 1) * pairs.pairs.size() / chunks; ++i) {
+      candidates.load(sp, sq, pairs.pairs[i], true);
+      const std::size_t before = out.size();
+      candidates.for_each([&](std::size_t ip, std::size_t iq) {
+        if (auto k = octree->leaf(candidates.position(ip, iq))) out.push_back(*k);
+      });
+      std::sort(out.begin() + before, out.end());
+      out.erase(std::unique(out.begin() + before, out.end()), out.end());
+    }
+  });
+  std::vector<Octree_filter::Key> all;
+  for (auto& l : leaves) { all.insert(all.end(), l.begin(), l.end()); l = {}; }
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  octree->certify(std::move(all), parallel);
+  return octree;
+}
 
 } // namespace internal
 } // namespace Pmsum

@@ -1,18 +1,26 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// A parallel loop (TBB) that falls back to a plain loop, for the stages that are not
-// organised in waves (normal filter, octree filter).
+// Parallel loops (TBB) that fall back to plain loops: for_each_index for the stages that
+// decide independent items (normal filter, octree filter), run_in_waves for the stage whose
+// results are committed in canonical order (decisions, covering net, output), and
+// Per_thread for the state each thread keeps (collision filters).
 
 #ifndef CGAL_PMSUM_INTERNAL_PARALLEL_H
 #define CGAL_PMSUM_INTERNAL_PARALLEL_H
 
+#include <CGAL_pmsum/exceptions.h>
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #endif
 
 #include <cstddef>
+#include <functional>
+#include <optional>
+#include <vector>
 
 namespace CGAL {
 namespace Pmsum {
@@ -33,6 +41,73 @@ void for_each_index(std::size_t n, bool parallel, const F& f)
   (void)parallel;
 #endif
   for (std::size_t i = 0; i < n; ++i) f(i);
+}
+
+/// One T per thread, made from the same constructor arguments; a single T when sequential.
+template <class T>
+class Per_thread
+{
+public:
+  template <class... Args>
+  explicit Per_thread(bool parallel, const Args&... args)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if (parallel) { m_many.emplace(args...); return; }
+#else
+    (void)parallel;
+#endif
+    m_one.emplace(args...);
+  }
+  T& local()
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if (m_many) return m_many->local();
+#endif
+    return *m_one;
+  }
+  template <class F>
+  void for_each(const F& f) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if (m_many)
+      for (const T& t : *m_many) f(t);
+#endif
+    if (m_one) f(*m_one);
+  }
+
+private:
+  std::optional<T> m_one;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::enumerable_thread_specific<T>> m_many;
+#endif
+};
+
+/// Runs process(i, buffer) for every i in [0, work.size()), in waves of consecutive indices
+/// holding about `wave_work` of work each (work[i] for index i; at least one index a wave),
+/// in parallel within a wave if asked; each index has a cleared Buffer of its own. After
+/// each wave, on the calling thread: commit(i, buffer) for each index of the wave in order,
+/// then progress(fraction of the work done), which cancels (throws Operation_cancelled) by
+/// returning false. The waves do not depend on the number of threads.
+template <class Buffer, class Process, class Commit>
+void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, bool parallel, const Process& process,
+                  const Commit& commit, const std::function<bool(double)>& progress)
+{
+  std::size_t total = 0, done = 0;
+  for (std::size_t w : work) total += w;
+  std::vector<Buffer> buffers;
+  for (std::size_t first = 0; first < work.size();) {
+    std::size_t last = first, wave = 0;
+    while (last < work.size() && (wave < wave_work || last == first)) wave += work[last++];
+    if (buffers.size() < last - first) buffers.resize(last - first);
+    for_each_index(last - first, parallel, [&](std::size_t k) {
+      buffers[k].clear();
+      process(first + k, buffers[k]);
+    });
+    for (std::size_t i = first; i < last; ++i) commit(i, buffers[i - first]);
+    done += wave;
+    first = last;
+    if (progress && !progress(total == 0 ? 1. : double(done) / double(total))) throw Operation_cancelled();
+  }
 }
 
 } // namespace internal

@@ -1,0 +1,127 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 4 of the pipeline: the covering net. The boundary candidates are a d/2-covering of
+// the boundary; a subset N in which every boundary candidate has a point closer than d/2 is
+// therefore a d-covering, and the greedy choice (take a boundary candidate unless a point of
+// N is closer than d/2) keeps the points of N at least d/2 apart: a (d/2, d)-net. A candidate
+// already closer than d/2 to N is covered whatever it is, so it needs no collision test.
+// (Design note: shared/design/covering-net.md.)
+//
+// Distances are computed in double on rounded positions, with a margin that makes both
+// promises hold for the exact points: a candidate counts as covered only if its exact
+// distance is below d/2, and net points are at least d/2 - 2 * margin apart, where the margin
+// is a few hundred units in the last place of the largest coordinate.
+
+#ifndef CGAL_PMSUM_INTERNAL_COVERING_NET_H
+#define CGAL_PMSUM_INTERNAL_COVERING_NET_H
+
+#include <CGAL_pmsum/internal/candidates.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+class Covering_net
+{
+public:
+  /// A net for covering distance d of points whose coordinates are at most `scale` in
+  /// absolute value. If d is too small next to `scale` for the rounding margin (or for the
+  /// cell indices), the net covers nothing: every boundary candidate is kept.
+  Covering_net(double d, double scale)
+    : m_d(d), m_scale(scale), m_margin(256 * std::numeric_limits<double>::epsilon() * (scale + d)),
+      m_radius(d / 2 - m_margin), m_cell(d / 2)
+  {
+    m_enabled = m_radius > 0 && scale / m_cell < double(std::int64_t(1) << 40);
+    m_radius2 = m_radius * m_radius;
+  }
+
+  /// An empty net with the same parameters.
+  Covering_net empty_like() const { return Covering_net(m_d, m_scale); }
+
+  bool enabled() const { return m_enabled; }
+  std::size_t size() const { return m_points.size(); }
+  const Point3& point(std::size_t i) const { return m_points[i]; }
+  /// Lower bound of the distance between two points of the net (exact points).
+  double spacing() const { return m_cell - 2 * m_margin; }
+
+  /// Is a point of the net closer than d/2 to the (exact point rounded to) x?
+  bool covers(const Point3& x) const
+  {
+    if (!m_enabled || m_points.empty()) return false;
+    const std::array<std::int64_t, 3> c = cell_of(x);
+    for (std::int64_t i = -1; i <= 1; ++i)
+      for (std::int64_t j = -1; j <= 1; ++j)
+        for (std::int64_t k = -1; k <= 1; ++k) {
+          const auto it = m_cells.find(key({c[0] + i, c[1] + j, c[2] + k}));
+          if (it == m_cells.end()) continue;
+          for (std::uint32_t n = it->second; n != none; n = m_next[n]) {
+            const Point3& y = m_points[n];
+            const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+            if (dx * dx + dy * dy + dz * dz < m_radius2) return true;
+          }
+        }
+    return false;
+  }
+
+  /// Adds x to the net (the caller has checked that it is not covered).
+  void insert(const Point3& x)
+  {
+    if (!m_enabled) return;
+    auto [it, added] = m_cells.emplace(key(cell_of(x)), none);
+    m_points.push_back(x);
+    m_next.push_back(it->second);
+    it->second = std::uint32_t(m_points.size() - 1);
+  }
+
+private:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  std::array<std::int64_t, 3> cell_of(const Point3& x) const
+  {
+    return {std::int64_t(std::floor(x[0] / m_cell)), std::int64_t(std::floor(x[1] / m_cell)),
+            std::int64_t(std::floor(x[2] / m_cell))};
+  }
+  static std::uint64_t key(const std::array<std::int64_t, 3>& c)
+  {
+    // 21 bits per axis after an offset: cells are unique within 2^20 cells of the origin in
+    // each direction, and farther cells only share buckets (the distance test decides).
+    const auto part = [](std::int64_t v) { return std::uint64_t(v + (std::int64_t(1) << 20)) & 0x1FFFFF; };
+    return part(c[0]) | (part(c[1]) << 21) | (part(c[2]) << 42);
+  }
+
+  double m_d, m_scale, m_margin, m_radius, m_radius2, m_cell;
+  bool m_enabled;
+  std::unordered_map<std::uint64_t, std::uint32_t> m_cells; // cell -> last point inserted there
+  std::vector<Point3> m_points;
+  std::vector<std::uint32_t> m_next; // previous point of the same cell
+};
+
+/// The greedy (d/2, d)-net of `points` in their order: the indices of the points kept.
+/// For a d/2-covering of a surface by points on it, the kept points cover it within d.
+inline std::vector<std::size_t> greedy_net(const std::vector<Point3>& points, double d)
+{
+  double scale = 0;
+  for (const Point3& x : points)
+    for (double c : x) scale = (std::max)(scale, std::abs(c));
+  Covering_net net(d, scale);
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!net.covers(points[i])) {
+      net.insert(points[i]);
+      kept.push_back(i);
+    }
+  return kept;
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_COVERING_NET_H

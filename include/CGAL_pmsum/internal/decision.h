@@ -1,0 +1,215 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 3 of the pipeline: the decision of every candidate, in this order:
+//   1. reuse      coarse to fine: a candidate the coarser level decided keeps its decision;
+//   2. interior   a candidate in an octree cell certified inside the sum is inner;
+//   3. net        a candidate closer than d/2 to a chosen output point is covered: dropped
+//                 untested (covering_net.h);
+//   4. CD         otherwise the exact collision test (cd_filter.h) decides.
+// The output is the greedy net of the boundary candidates in canonical order (candidates.h):
+// a candidate is output iff it is a boundary point and no earlier output point covers it.
+//
+// That order is sequential, the tests are not: a wave of feature pairs is decided in
+// parallel against the net as it stood before the wave (decide_pair), each pair also
+// skipping what its own tentative points cover; the wave is then committed in canonical
+// order on one thread (commit), which drops what an earlier commit now covers and tests the
+// rare candidate whose covering tentative point was dropped. The result is the sequential
+// greedy net, for any number of threads.
+
+#ifndef CGAL_PMSUM_INTERNAL_DECISION_H
+#define CGAL_PMSUM_INTERNAL_DECISION_H
+
+#include <CGAL_pmsum/internal/candidates.h>
+#include <CGAL_pmsum/internal/cd_filter.h>
+#include <CGAL_pmsum/internal/covering_net.h>
+#include <CGAL_pmsum/internal/octree_filter.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// A sample in lowest terms, to recognise the same point in a coarser level's sampling.
+inline std::array<std::int32_t, 4> canonical(const Sample& s)
+{
+  std::int32_t g = s.denominator;
+  for (int i = 0; i < 3; ++i) g = std::gcd(g, s.weights[i]);
+  return {s.weights[0] / g, s.weights[1] / g, s.weights[2] / g, s.denominator / g};
+}
+
+/// Direction index meaning "inner" (decided, not on the boundary), or "not tested yet".
+constexpr std::uint32_t inner = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t untested = inner - 1;
+
+/// The CD decisions of coarser levels (coarse to fine): candidate -> direction or inner.
+class Decision_cache
+{
+public:
+  struct Key
+  {
+    std::size_t pair;
+    std::array<std::int32_t, 4> p, q;
+    static Key of(std::size_t pair, const Sample& p, const Sample& q) { return {pair, canonical(p), canonical(q)}; }
+    bool operator==(const Key& o) const { return pair == o.pair && p == o.p && q == o.q; }
+  };
+  struct Hash
+  {
+    std::size_t operator()(const Key& k) const
+    {
+      std::uint64_t h = k.pair * 0x9E3779B97F4A7C15ull;
+      for (const auto* a : {&k.p, &k.q})
+        for (std::int32_t v : *a) h = (h ^ std::uint64_t(std::uint32_t(v))) * 0x100000001B3ull;
+      return std::size_t(h ^ (h >> 29));
+    }
+  };
+
+  /// The decision (a direction or `inner`), or `untested`.
+  std::uint32_t find(const Key& k) const
+  {
+    const auto it = m_map.find(k);
+    return it == m_map.end() ? untested : it->second;
+  }
+  void add(const Key& k, std::uint32_t decision) { m_map.emplace(k, decision); }
+  bool empty() const { return m_map.empty(); }
+
+private:
+  std::unordered_map<Key, std::uint32_t, Hash> m_map;
+};
+
+/// A candidate that may become an output point: a boundary point with its direction, or one
+/// left untested because a tentative point of its own pair covered it.
+struct Tentative
+{
+  Sample p, q;
+  Point3 x;
+  std::uint32_t direction; // index in Candidate_pairs::directions, or `untested`
+  bool kept;               // a vertex + vertex sum kept whatever covers it
+};
+
+/// Counters of the decision stage (per thread, added up at the end).
+struct Decision_counters
+{
+  std::size_t reused = 0, certified = 0, covered = 0, tested_in_commit = 0;
+  void add(const Decision_counters& o)
+  {
+    reused += o.reused; certified += o.certified; covered += o.covered; tested_in_commit += o.tested_in_commit;
+  }
+};
+
+/// What the decisions of one level read. Everything but `filter` is shared and read-only
+/// while pairs are decided in parallel.
+struct Decision_context
+{
+  const Candidate_pairs* pairs;
+  const Mesh_sampling *sp, *sq;
+  const Mesh_sampling *coarser_p = nullptr, *coarser_q = nullptr; // coarse to fine
+  const Decision_cache* cache = nullptr;                          // coarse to fine
+  const Octree_filter* octree = nullptr;
+  const Covering_net* net = nullptr;   // nullptr: every boundary candidate is output
+  bool use_cd_filter = true;           // false: every candidate is output
+  bool keep_vertex_sums = false;       // vertex + vertex boundary points are output even if covered
+  bool record_decisions = false;       // coarse to fine: fill Pair_decision::tested
+};
+
+/// The outcome of one pair's decisions.
+struct Pair_decision
+{
+  std::vector<Tentative> tentative;     // in canonical order
+  std::vector<std::pair<Decision_cache::Key, std::uint32_t>> tested; // if record_decisions
+  void clear() { tentative.clear(); tested.clear(); }
+};
+
+/// The CD test of candidate (p, q) of pair fp: its direction, or `inner`.
+inline std::uint32_t cd_decision(Cd_filter& filter, const Candidate_pairs& pairs, const Feature_pair& fp,
+                                 const Sample& p, const Sample& q)
+{
+  const Direction* dirs = pairs.directions.data() + fp.first_direction;
+  for (std::uint32_t k = 0; k < fp.number_of_directions; ++k) {
+    if (filter.is_free(p, q, dirs, fp.number_of_directions, k)) return fp.first_direction + k;
+    if (filter.decided_without_perturbation()) break; // the same for every direction
+  }
+  return inner;
+}
+
+/// Thread phase: decides the candidates of pair i (see the file comment) into `out`.
+inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* filter, Pair_candidates& candidates,
+                        Pair_decision& out, Decision_counters& counters)
+{
+  const Feature_pair& fp = c.pairs->pairs[i];
+  const bool positions = c.octree || c.net;
+  candidates.load(*c.sp, *c.sq, fp, positions);
+  // Which samples the coarser level had (only their pairs can be in the cache).
+  std::vector<std::uint8_t> old_p(candidates.size_p(), 0), old_q(candidates.size_q(), 0);
+  if (c.coarser_p && c.cache && !c.cache->empty()) {
+    for (std::size_t k = 0; k < old_p.size(); ++k) old_p[k] = c.sp->is_sample_of(candidates.p(k), *c.coarser_p);
+    for (std::size_t k = 0; k < old_q.size(); ++k) old_q[k] = c.sq->is_sample_of(candidates.q(k), *c.coarser_q);
+  }
+  std::optional<Covering_net> own; // this pair's tentative points, on top of c.net
+  candidates.for_each([&](std::size_t ip, std::size_t iq) {
+    const Sample &p = candidates.p(ip), &q = candidates.q(iq);
+    const Point3 x = positions ? candidates.position(ip, iq) : Point3{};
+    if (!filter || !c.use_cd_filter) { out.tentative.push_back({p, q, x, fp.first_direction, true}); return; }
+    const bool kept = c.keep_vertex_sums && p.origin.dimension == 0 && q.origin.dimension == 0;
+    std::uint32_t decision = untested;
+    if (old_p[ip] && old_q[iq]) {
+      decision = c.cache->find(Decision_cache::Key::of(i, p, q));
+      if (decision != untested) ++counters.reused;
+    }
+    if (decision == untested && c.octree && c.octree->certified(x)) {
+      ++counters.certified;
+      return;
+    }
+    if (decision == inner) return;
+    if (!kept && c.net && c.net->covers(x)) { ++counters.covered; return; }
+    if (!kept && own && own->covers(x)) { out.tentative.push_back({p, q, x, untested, false}); return; }
+    if (decision == untested) {
+      decision = cd_decision(*filter, *c.pairs, fp, p, q);
+      if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), decision);
+      if (decision == inner) return;
+    }
+    out.tentative.push_back({p, q, x, decision, kept});
+    if (c.net) {
+      if (!own) own.emplace(c.net->empty_like());
+      own->insert(x);
+    }
+  });
+}
+
+/// Commit phase, on one thread, pairs in canonical order: the sequential greedy choice over
+/// the tentative points of pair i. Calls emit(tentative with its direction) for each output
+/// point and inserts it in `net`; `filter` tests what decide_pair left untested.
+template <class Emit>
+void commit_pair(const Decision_context& c, std::size_t i, Pair_decision& decided, Covering_net* net,
+                 Cd_filter* filter, Decision_counters& counters,
+                 std::vector<std::pair<Decision_cache::Key, std::uint32_t>>& tested, const Emit& emit)
+{
+  const Feature_pair& fp = c.pairs->pairs[i];
+  for (Tentative& t : decided.tentative) {
+    if (!t.kept && net && net->covers(t.x)) {
+      counters.covered += (t.direction == untested);
+      continue;
+    }
+    if (t.direction == untested) {
+      ++counters.tested_in_commit;
+      t.direction = cd_decision(*filter, *c.pairs, fp, t.p, t.q);
+      if (c.record_decisions) tested.emplace_back(Decision_cache::Key::of(i, t.p, t.q), t.direction);
+      if (t.direction == inner) continue;
+    }
+    if (net) net->insert(t.x);
+    emit(t);
+  }
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_DECISION_H
