@@ -18,6 +18,8 @@
 
 #include <CGAL_pmsum/internal/candidates.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -56,17 +58,15 @@ public:
   {
     if (!m_enabled || m_points.empty()) return false;
     const std::array<std::int64_t, 3> c = cell_of(x);
-    for (std::int64_t i = -1; i <= 1; ++i)
-      for (std::int64_t j = -1; j <= 1; ++j)
-        for (std::int64_t k = -1; k <= 1; ++k) {
-          const auto it = m_cells.find(key({c[0] + i, c[1] + j, c[2] + k}));
-          if (it == m_cells.end()) continue;
-          for (std::uint32_t n = it->second; n != none; n = m_next[n]) {
-            const Point3& y = m_points[n];
-            const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-            if (dx * dx + dy * dy + dz * dz < m_radius2) return true;
-          }
-        }
+    for (const auto& o : neighbour_offsets()) { // own cell first: most covered points are found there
+      const auto it = m_cells.find(key({c[0] + o[0], c[1] + o[1], c[2] + o[2]}));
+      if (it == m_cells.end()) continue;
+      for (std::uint32_t n = it->second; n != none; n = m_next[n]) {
+        const Point3& y = m_points[n];
+        const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+        if (dx * dx + dy * dy + dz * dz < m_radius2) return true;
+      }
+    }
     return false;
   }
 
@@ -82,6 +82,23 @@ public:
 
 private:
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  /// The 27 cells around a cell, nearest first.
+  static const std::array<std::array<std::int64_t, 3>, 27>& neighbour_offsets()
+  {
+    static const std::array<std::array<std::int64_t, 3>, 27> offsets = [] {
+      std::array<std::array<std::int64_t, 3>, 27> o{};
+      std::size_t n = 0;
+      for (std::int64_t i = -1; i <= 1; ++i)
+        for (std::int64_t j = -1; j <= 1; ++j)
+          for (std::int64_t k = -1; k <= 1; ++k) o[n++] = {i, j, k};
+      std::stable_sort(o.begin(), o.end(), [](const auto& a, const auto& b) {
+        return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+      });
+      return o;
+    }();
+    return offsets;
+  }
 
   std::array<std::int64_t, 3> cell_of(const Point3& x) const
   {

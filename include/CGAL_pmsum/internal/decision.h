@@ -185,13 +185,15 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
 
 /// Commit phase, on one thread, pairs in canonical order: the sequential greedy choice over
 /// the tentative points of pair i. Calls emit(tentative with its direction) for each output
-/// point and inserts it in `net`; `filter` tests what decide_pair left untested.
+/// point and inserts it in `net`; `filter` tests what decide_pair left untested. With
+/// `cache` (coarse to fine), every decision of the pair is added to it.
 template <class Emit>
 void commit_pair(const Decision_context& c, std::size_t i, Pair_decision& decided, Covering_net* net,
-                 Cd_filter* filter, Decision_counters& counters,
-                 std::vector<std::pair<Decision_cache::Key, std::uint32_t>>& tested, const Emit& emit)
+                 Cd_filter* filter, Decision_counters& counters, Decision_cache* cache, const Emit& emit)
 {
   const Feature_pair& fp = c.pairs->pairs[i];
+  if (cache)
+    for (const auto& [key, decision] : decided.tested) cache->add(key, decision);
   for (Tentative& t : decided.tentative) {
     if (!t.kept && net && net->covers(t.x)) {
       counters.covered += (t.direction == untested);
@@ -200,7 +202,7 @@ void commit_pair(const Decision_context& c, std::size_t i, Pair_decision& decide
     if (t.direction == untested) {
       ++counters.tested_in_commit;
       t.direction = cd_decision(*filter, *c.pairs, fp, t.p, t.q);
-      if (c.record_decisions) tested.emplace_back(Decision_cache::Key::of(i, t.p, t.q), t.direction);
+      if (cache) cache->add(Decision_cache::Key::of(i, t.p, t.q), t.direction);
       if (t.direction == inner) continue;
     }
     if (net) net->insert(t.x);
