@@ -29,8 +29,7 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// The candidate count exceeds the limit set with `maximum_number_of_candidates()` (or,
-/// without the normal filter, the feature pairs to store do).
+/// The candidate count exceeds the limit set with `maximum_number_of_candidates()`.
 class Too_many_candidates : public Too_large
 {
 public:
@@ -40,6 +39,14 @@ public:
   Too_many_candidates(std::size_t candidates, std::size_t limit, const std::string& what)
     : Too_large(what), candidates(candidates), limit(limit) {}
   std::size_t candidates, limit;
+};
+
+/// Without the normal filter: the (feature pair, direction) records to store exceed the
+/// limit set with `maximum_number_of_candidates()` (checked before they are stored).
+class Too_many_feature_pairs : public Too_many_candidates
+{
+public:
+  using Too_many_candidates::Too_many_candidates;
 };
 
 /// `d` is so small that a feature would need more subdivisions than the sample lattice

@@ -164,7 +164,7 @@ inline void facet_directions(const Mesh_data& M, Direction::Kind kind, Index t, 
 /// The kept feature pairs. Without the normal filter every feature pair is kept; pairs the
 /// filter would have dropped get the facet directions around their features. The tests run
 /// in parallel if asked (chunks of facets and edges); the result is sorted, hence the same.
-/// Without the normal filter, throws Too_many_candidates before allocating them if the
+/// Without the normal filter, throws Too_many_feature_pairs before allocating them if the
 /// (pair, direction) records to store would be more than `max_records`.
 inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_data& Q, bool use_normal_filter,
                                                bool parallel = false,
@@ -193,7 +193,7 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
     const long double records = (long double)(fq) * dp + (long double)(fp) * dq; // no overflow
     if (records > (long double)(max_records)) {
       const std::size_t n = records >= (long double)(std::size_t(-1)) ? std::size_t(-1) : std::size_t(records);
-      throw Too_many_candidates(n, max_records,
+      throw Too_many_feature_pairs(n, max_records,
                                 "without the normal filter, the " + std::to_string(fp) + " x " + std::to_string(fq) +
                                   " feature pairs need up to " + std::to_string(n) +
                                   " (pair, direction) records, more than the limit of " + std::to_string(max_records));
