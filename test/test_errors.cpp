@@ -3,6 +3,8 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Random.h>
+#include <CGAL/intersections.h>
 
 #include <catch2/catch.hpp>
 
@@ -218,4 +220,55 @@ TEST_CASE("a closed mesh that intersects itself", "[errors]")
   Soup s = box({0, 0, 0}, {1, 1, 1});
   s.points[7] = {0.25, 0.5, -1};
   CHECK_THAT(error_of(to_mesh<Mesh>(s), cube, 0.5), Contains("P component 0 intersects itself (faces"));
+}
+
+TEST_CASE("the triangle crossing test against exact intersections", "[errors]")
+{
+  // Reference: the relative interiors meet (non-coplanar: the intersection is a segment whose
+  // midpoint is strictly inside both), or coplanar triangles on the same side overlap with
+  // positive area. Small integer coordinates make many degenerate (touching) pairs.
+  using CGAL::Pmsum::internal::Mesh_data;
+  CGAL::Random rng(11);
+  auto strictly_inside = [](const EK::Triangle_3& t, const EK::Point_3& p) {
+    const auto &a = t[0], &b = t[1], &c = t[2];
+    return CGAL::coplanar(a, b, c, p) && CGAL::coplanar_orientation(a, b, c, p) == CGAL::POSITIVE &&
+           CGAL::coplanar_orientation(b, c, a, p) == CGAL::POSITIVE && CGAL::coplanar_orientation(c, a, b, p) == CGAL::POSITIVE;
+  };
+  std::size_t crossing = 0, touching = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Mesh_data m;
+    const int range = trial % 2 ? 2 : 4;
+    for (int i = 0; i < 6; ++i)
+      m.points.push_back({double(rng.get_int(0, range)), double(rng.get_int(0, range)), double(rng.get_int(0, range))});
+    if (trial % 3 == 0) // coplanar pairs, in z = 0 or x + y + z = range
+      for (auto& p : m.points) p[2] = (trial % 2) ? 0 : range - p[0] - p[1];
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    EK::Point_3 P[6];
+    for (int i = 0; i < 6; ++i) P[i] = EK::Point_3(m.points[i][0], m.points[i][1], m.points[i][2]);
+    const EK::Triangle_3 T1(P[0], P[1], P[2]), T2(P[3], P[4], P[5]);
+    if (T1.is_degenerate() || T2.is_degenerate()) continue;
+    m.components.resize(1);
+    m.triangle_component = {0, 0};
+    m.vertex_component.assign(6, 0);
+    const bool got = CGAL::Pmsum::internal::Solid_checker(m, "P").triangles_cross(0, 1);
+
+    bool expected = false;
+    if (const auto x = CGAL::intersection(T1, T2)) {
+      if (const EK::Segment_3* s = boost::get<EK::Segment_3>(&*x)) {
+        const EK::Point_3 mid = CGAL::midpoint(s->source(), s->target());
+        const bool coplanar = CGAL::coplanar(P[0], P[1], P[2], P[3]) && CGAL::coplanar(P[0], P[1], P[2], P[4]) &&
+                              CGAL::coplanar(P[0], P[1], P[2], P[5]);
+        expected = !coplanar && strictly_inside(T1, mid) && strictly_inside(T2, mid);
+      } else if (!boost::get<EK::Point_3>(&*x)) { // a triangle or polygon: coplanar, positive area
+        expected = CGAL::scalar_product(T1.supporting_plane().orthogonal_vector(),
+                                        T2.supporting_plane().orthogonal_vector()) > 0;
+      }
+      touching += !expected;
+    }
+    crossing += expected;
+    INFO("trial " << trial << ": " << T1 << " / " << T2);
+    REQUIRE(got == expected);
+  }
+  CHECK(crossing > 1000);
+  CHECK(touching > 500);
 }

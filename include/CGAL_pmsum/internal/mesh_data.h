@@ -260,6 +260,52 @@ public:
     }
   }
 
+  /// Do the relative interiors of triangles s and t meet in a way that makes their solids
+  /// overlap: a transversal crossing, or coplanar overlapping faces on the same side?
+  bool triangles_cross(Index s, Index t) const
+  {
+    const std::array<P3, 3> T1 = {pt(m.triangles[s][0]), pt(m.triangles[s][1]), pt(m.triangles[s][2])};
+    const std::array<P3, 3> T2 = {pt(m.triangles[t][0]), pt(m.triangles[t][1]), pt(m.triangles[t][2])};
+    std::array<CGAL::Sign, 3> s2, s1; // vertices of T2 against T1's plane, and conversely
+    for (int i = 0; i < 3; ++i) s2[i] = orientation(T1[0], T1[1], T1[2], T2[i]);
+    auto straddles = [](const std::array<CGAL::Sign, 3>& x) {
+      return std::count(x.begin(), x.end(), CGAL::POSITIVE) > 0 && std::count(x.begin(), x.end(), CGAL::NEGATIVE) > 0;
+    };
+    if (s2[0] == CGAL::ZERO && s2[1] == CGAL::ZERO && s2[2] == CGAL::ZERO) {
+      // coplanar: same side (normals agree) and interiors overlapping with positive area,
+      // i.e. no edge line of either triangle leaves the other on its outer closed side
+      const CGAL::Sign same = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        const Vec3<NT> a = to_nt<NT>(T1[0]), b = to_nt<NT>(T2[0]);
+        return dot(cross(to_nt<NT>(T1[1]) - a, to_nt<NT>(T1[2]) - a), cross(to_nt<NT>(T2[1]) - b, to_nt<NT>(T2[2]) - b));
+      });
+      if (same != CGAL::POSITIVE) return false;
+      for (const auto* pair : {&T1, &T2}) {
+        const auto& A = *pair;
+        const auto& B = (pair == &T1) ? T2 : T1;
+        for (int i = 0; i < 3; ++i) {
+          bool separates = true;
+          for (int j = 0; j < 3 && separates; ++j)
+            separates = side_in_plane(A[i], A[(i + 1) % 3], B[j], A.data()) != CGAL::POSITIVE;
+          if (separates) return false;
+        }
+      }
+      return true;
+    }
+    if (!straddles(s2)) return false;
+    for (int i = 0; i < 3; ++i) s1[i] = orientation(T2[0], T2[1], T2[2], T1[i]);
+    if (!straddles(s1)) return false;
+    // Both cross the other's plane: T1 ∩ plane(T2) and T2 ∩ plane(T1) are segments of the
+    // same line; their open interiors overlap iff an end of one lies inside the other
+    // triangle, or both ends of one are on the other's border (the segments are equal).
+    const std::array<Where, 2> e1 = ends(T1, s1, T2), e2 = ends(T2, s2, T1);
+    for (const auto& e : {e1, e2}) {
+      if (e[0] == INSIDE || e[1] == INSIDE) return true;
+      if (e[0] == ON_BORDER && e[1] == ON_BORDER) return true;
+    }
+    return false;
+  }
+
 private:
   const P3& pt(Index v) const { return m.points[v]; }
 
@@ -328,52 +374,6 @@ private:
       else if (s[j] != CGAL::ZERO && s[i] != s[j]) w[k++] = segment_through(T1[i], T1[j], T2);
     }
     return w;
-  }
-
-  /// Do the relative interiors of triangles s and t meet in a way that makes their solids
-  /// overlap: a transversal crossing, or coplanar overlapping faces on the same side?
-  bool triangles_cross(Index s, Index t) const
-  {
-    const std::array<P3, 3> T1 = {pt(m.triangles[s][0]), pt(m.triangles[s][1]), pt(m.triangles[s][2])};
-    const std::array<P3, 3> T2 = {pt(m.triangles[t][0]), pt(m.triangles[t][1]), pt(m.triangles[t][2])};
-    std::array<CGAL::Sign, 3> s2, s1; // vertices of T2 against T1's plane, and conversely
-    for (int i = 0; i < 3; ++i) s2[i] = orientation(T1[0], T1[1], T1[2], T2[i]);
-    auto straddles = [](const std::array<CGAL::Sign, 3>& x) {
-      return std::count(x.begin(), x.end(), CGAL::POSITIVE) > 0 && std::count(x.begin(), x.end(), CGAL::NEGATIVE) > 0;
-    };
-    if (s2[0] == CGAL::ZERO && s2[1] == CGAL::ZERO && s2[2] == CGAL::ZERO) {
-      // coplanar: same side (normals agree) and interiors overlapping with positive area,
-      // i.e. no edge line of either triangle leaves the other on its outer closed side
-      const CGAL::Sign same = filtered_sign([&](auto nt) {
-        using NT = decltype(nt);
-        const Vec3<NT> a = to_nt<NT>(T1[0]), b = to_nt<NT>(T2[0]);
-        return dot(cross(to_nt<NT>(T1[1]) - a, to_nt<NT>(T1[2]) - a), cross(to_nt<NT>(T2[1]) - b, to_nt<NT>(T2[2]) - b));
-      });
-      if (same != CGAL::POSITIVE) return false;
-      for (const auto* pair : {&T1, &T2}) {
-        const auto& A = *pair;
-        const auto& B = (pair == &T1) ? T2 : T1;
-        for (int i = 0; i < 3; ++i) {
-          bool separates = true;
-          for (int j = 0; j < 3 && separates; ++j)
-            separates = side_in_plane(A[i], A[(i + 1) % 3], B[j], A.data()) != CGAL::POSITIVE;
-          if (separates) return false;
-        }
-      }
-      return true;
-    }
-    if (!straddles(s2)) return false;
-    for (int i = 0; i < 3; ++i) s1[i] = orientation(T2[0], T2[1], T2[2], T1[i]);
-    if (!straddles(s1)) return false;
-    // Both cross the other's plane: T1 ∩ plane(T2) and T2 ∩ plane(T1) are segments of the
-    // same line; their open interiors overlap iff an end of one lies inside the other
-    // triangle, or both ends of one are on the other's border (the segments are equal).
-    const std::array<Where, 2> e1 = ends(T1, s1, T2), e2 = ends(T2, s2, T1);
-    for (const auto& e : {e1, e2}) {
-      if (e[0] == INSIDE || e[1] == INSIDE) return true;
-      if (e[0] == ON_BORDER && e[1] == ON_BORDER) return true;
-    }
-    return false;
   }
 
   /// Is closed component b inside closed component a (their surfaces do not cross)? Decided
