@@ -293,6 +293,7 @@ inline Sum_input read_sum_input(const Arguments& args)
       previous = x;
       in.coarser_d.push_back(in.relative ? x * in.diagonal : x);
     }
+    if (in.coarser_d.empty()) throw Usage_error("--levels needs at least one distance larger than -d");
   }
   in.read_seconds = seconds_since(start);
   return in;

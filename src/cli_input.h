@@ -487,6 +487,9 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
   for (const auto& p : s.points)
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       throw Error(what + " has a vertex with a coordinate that is not finite (NaN or infinity)");
+  // Vertices of no face are ignored by every stage; CGAL 5.5's orient_to_bound_a_volume
+  // crashes on them (segmentation fault in volume_connected_components).
+  PMP::remove_isolated_points_in_polygon_soup(s.points, s.polygons);
   Mesh m;
   if (!PMP::is_polygon_soup_a_polygon_mesh(s.polygons)) {
     PMP::repair_polygon_soup(s.points, s.polygons);

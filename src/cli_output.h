@@ -83,6 +83,9 @@ public:
       if (!in.empty() && fs::exists(p, ec) && fs::equivalent(p, fs::path(in), ec))
         throw Usage_error(what + " '" + path + "' is the input file '" + in + "'; refusing to overwrite it");
     if (fs::is_directory(p, ec)) throw Error("cannot write " + what + " '" + path + "': it is a directory");
+    // The file is renamed into place: never over a device, a pipe or a socket (/dev/null...).
+    if (fs::exists(p, ec) && !fs::is_regular_file(p, ec))
+      throw Error("cannot write " + what + " '" + path + "': not a regular file");
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec))
       throw Error("cannot write " + what + " '" + path + "': no such directory '" + dir.string() + "'");

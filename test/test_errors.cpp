@@ -1,4 +1,9 @@
 // Bad input: a clear exception, nothing written to the output.
+//
+// CGAL's assertions are on in this translation unit whatever the build type, so that every
+// check here gives the same exception as in a release build (not CGAL::Precondition_exception).
+#undef NDEBUG
+#undef CGAL_NDEBUG
 #include "test_support.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
