@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-demo}
 
-packages=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libtbb-dev catch2)
+packages=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libtbb-dev catch2 python3)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,17 +7,15 @@
 #ifndef CGAL_PMSUM_CLI_COMMON_H
 #define CGAL_PMSUM_CLI_COMMON_H
 
+#include "cli_errors.h"
+#include "cli_input.h"
+#include "cli_output.h"
+
 #include <CGAL_pmsum/point_minkowski_sum.h>
 #include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Surface_mesh.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -42,98 +40,6 @@
 
 namespace pmsum_cli {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-/// An error the user can fix: printed as one line, exit code 1.
-struct Error : std::runtime_error { using std::runtime_error::runtime_error; };
-/// A command-line mistake: printed with a usage hint, exit code 2.
-struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
-/// A run refused because it would exhaust the machine (--force overrides): exit code 3.
-struct Refused : std::runtime_error { using std::runtime_error::runtime_error; };
-
-inline std::string extension(const std::string& path)
-{
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos) return "";
-  std::string e = path.substr(dot + 1);
-  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
-/// Notes for the user (stderr), e.g. "triangulated 6 faces".
-inline void note(const std::string& msg, bool quiet)
-{
-  if (!quiet) std::cerr << "pmsum: note: " << msg << "\n";
-}
-
-/// Reads a mesh (OFF, OBJ, PLY, STL), repairing the polygon soup on the way (CGAL's PMP
-/// reader: duplicated points, non-manifold edges and vertices, inconsistent orientation).
-/// Non-triangle faces are triangulated and closed meshes oriented outward, with a note.
-inline Mesh read_mesh(const std::string& path, const std::string& name, bool quiet)
-{
-  const std::string what = name + " ('" + path + "')";
-  const std::string ext = extension(path);
-  if (ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-    throw Error("cannot read " + what + ": unknown format '." + ext + "' (use .off, .obj, .ply or .stl)");
-  if (!std::ifstream(path).good()) throw Error("cannot read " + what + ": no such file or not readable");
-  // A valid mesh is read as it is; only if that fails, CGAL's repairing reader merges
-  // duplicated points and splits non-manifold edges and vertices. (Repairing valid input
-  // would merge the coincident vertices of solids that touch along faces and then drop the
-  // coincident faces, opening the mesh.)
-  Mesh m;
-  bool ok = false;
-  try {
-    ok = CGAL::IO::read_polygon_mesh(path, m, CGAL::parameters::verbose(false)) && CGAL::is_valid_polygon_mesh(m);
-  } catch (const std::exception&) {
-    ok = false;
-  }
-  if (!ok) {
-    m.clear();
-    try {
-      ok = PMP::IO::read_polygon_mesh(path, m, CGAL::parameters::verbose(false));
-    } catch (const std::exception&) {
-      ok = false;
-    }
-  }
-  if (!ok) throw Error("cannot read " + what + ": malformed or not a polygon mesh");
-  if (m.number_of_faces() == 0) throw Error(what + " has no faces");
-  for (auto v : m.vertices()) {
-    const auto& p = m.point(v);
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Error(what + " has a vertex with a coordinate that is not finite (NaN or infinity)");
-  }
-  std::size_t polygons = 0;
-  for (auto f : m.faces()) polygons += (m.degree(f) != 3);
-  if (polygons > 0) {
-    if (!PMP::triangulate_faces(m))
-      throw Error(what + " has faces that cannot be triangulated");
-    note(what + ": triangulated " + std::to_string(polygons) + " non-triangle faces", quiet);
-  }
-  if (CGAL::is_closed(m)) {
-    // CGAL's does_bound_a_volume() accepts either global orientation: orient, then count
-    // the faces whose vertex cycle changed.
-    std::vector<std::array<Mesh::Vertex_index, 3>> before;
-    for (auto f : m.faces()) {
-      auto h = m.halfedge(f);
-      before.push_back({m.source(h), m.target(h), m.target(m.next(h))});
-    }
-    PMP::orient_to_bound_a_volume(m);
-    std::size_t flipped = 0, i = 0;
-    for (auto f : m.faces()) {
-      const auto h = m.halfedge(f);
-      const auto& b = before[i++];
-      const Mesh::Vertex_index s = m.source(h), t = m.target(h);
-      flipped += !((s == b[0] && t == b[1]) || (s == b[1] && t == b[2]) || (s == b[2] && t == b[0]));
-    }
-    if (flipped > 0)
-      note(what + " was not oriented outward: reversed " + std::to_string(flipped) + " of " +
-             std::to_string(m.number_of_faces()) + " faces to bound its volume", quiet);
-  }
-  return m;
-}
-
 /// Diagonal of the box a + b (the bounding box of a Minkowski sum); b empty: a's diagonal.
 inline double sum_diagonal(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b = CGAL::Bbox_3(0, 0, 0, 0, 0, 0))
 {
@@ -154,39 +60,27 @@ inline void scale_mesh(Mesh& m, double s)
 /// A point with a normal, as written to PLY / XYZ.
 struct Oriented_point { double p[3], n[3]; };
 
-/// Writes points to `path` (.ply binary little-endian, or .xyz ASCII) through a temporary
-/// file renamed at the end, so that an interrupted run leaves no partial output.
-inline void write_points(const std::string& path, const std::vector<Oriented_point>& pts)
+/// Writes points to `out` (.ply binary little-endian, or .xyz ASCII), which appears only
+/// when complete.
+inline void write_points(Output_file& out, const std::vector<Oriented_point>& pts)
 {
-  const std::string ext = extension(path);
-  const std::string tmp = path + ".part" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw Error("cannot write '" + path + "'");
+  const std::string ext = extension(out.path());
+  out.write([&](std::ostream& os) {
     if (ext == "ply") {
-      out << "ply\nformat binary_little_endian 1.0\ncomment CGAL_pmsum boundary points of a Minkowski sum\n"
-          << "element vertex " << pts.size() << "\n"
-          << "property double x\nproperty double y\nproperty double z\n"
-          << "property double nx\nproperty double ny\nproperty double nz\nend_header\n";
+      os << "ply\nformat binary_little_endian 1.0\ncomment CGAL_pmsum boundary points of a Minkowski sum\n"
+         << "element vertex " << pts.size() << "\n"
+         << "property double x\nproperty double y\nproperty double z\n"
+         << "property double nx\nproperty double ny\nproperty double nz\nend_header\n";
       static_assert(sizeof(Oriented_point) == 6 * sizeof(double), "packed doubles");
       const std::uint16_t probe = 1;
       if (*reinterpret_cast<const unsigned char*>(&probe) != 1) throw Error("big-endian hosts are not supported");
-      out.write(reinterpret_cast<const char*>(pts.data()), std::streamsize(pts.size() * sizeof(Oriented_point)));
+      os.write(reinterpret_cast<const char*>(pts.data()), std::streamsize(pts.size() * sizeof(Oriented_point)));
     } else {
-      out << std::setprecision(17);
+      os << std::setprecision(17);
       for (const auto& o : pts)
-        out << o.p[0] << ' ' << o.p[1] << ' ' << o.p[2] << ' ' << o.n[0] << ' ' << o.n[1] << ' ' << o.n[2] << '\n';
+        os << o.p[0] << ' ' << o.p[1] << ' ' << o.p[2] << ' ' << o.n[0] << ' ' << o.n[1] << ' ' << o.n[2] << '\n';
     }
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw Error("cannot write '" + path + "' (disk full?)");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "'");
-  }
+  }, std::ios::binary);
 }
 
 /// Minimal JSON object writer (keys in insertion order).
@@ -229,11 +123,9 @@ private:
   std::vector<std::string> m_items;
 };
 
-inline void write_json(const std::string& path, const Json& j)
+inline void write_json(Output_file& out, const Json& j)
 {
-  std::ofstream out(path);
-  out << j.dump() << "\n";
-  if (!out) throw Error("cannot write '" + path + "'");
+  out.write([&](std::ostream& os) { os << j.dump() << "\n"; });
 }
 
 /// Progress bar on stderr, shown only on a terminal and once a run has lasted a second.
@@ -404,6 +296,7 @@ inline Sum_input read_sum_input(const Arguments& args)
       previous = x;
       in.coarser_d.push_back(in.relative ? x * in.diagonal : x);
     }
+    if (in.coarser_d.empty()) throw Usage_error("--levels needs at least one distance larger than -d");
   }
   in.read_seconds = seconds_since(start);
   return in;
@@ -464,6 +357,9 @@ inline std::vector<Record> compute_sum(
         },
         np);
     });
+  } catch (const CGAL::Pmsum::Too_many_feature_pairs& e) {
+    throw Refused(std::string("refused: ") + e.what() + ": more than the memory available allows; use the normal "
+                  "filter, or --force");
   } catch (const CGAL::Pmsum::Too_many_candidates& e) {
     std::ostringstream msg;
     msg << "refused: d = " << in.d << " leaves " << e.candidates << " candidate points (up to "

@@ -58,6 +58,19 @@ int command_sum(int argc, char** argv)
   if (!args.has("-o")) throw Usage_error("sum needs -o OUT");
   const std::string out_path = points_output_path(args);
   const std::string out_ext = extension(out_path);
+  // Every output is checked (and its temporary file made) before the work: the levels'
+  // too, one per item of --levels (read_sum_input checks the items).
+  auto level_path = [&](std::size_t k) {
+    return out_path.substr(0, out_path.size() - out_ext.size() - 1) + ".level" + std::to_string(k) + "." + out_ext;
+  };
+  std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
+  if (args.has("--levels")) {
+    const std::string& list = args.values.at("--levels");
+    for (std::size_t k = 0; k <= std::size_t(std::count(list.begin(), list.end(), ',')); ++k)
+      outputs.push_back({"-o level " + std::to_string(k), level_path(k)});
+  }
+  if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
+  Output_files files(outputs, args.positional);
 
   const auto t_start = std::chrono::steady_clock::now();
   const Sum_input in = read_sum_input(args);
@@ -77,17 +90,16 @@ int command_sum(int argc, char** argv)
   double write_seconds = 0;
   const std::vector<Record> records = compute_sum(in, stats, [&](std::size_t k, const CGAL::Pmsum::Statistics& s,
                                                                  std::vector<Record>&& level) {
-    const std::string path = out_path.substr(0, out_path.size() - out_ext.size() - 1) + ".level" +
-                             std::to_string(k) + "." + out_ext;
+    const std::string path = level_path(k);
     const auto t_write = std::chrono::steady_clock::now();
-    write_points(path, oriented_points(level));
+    write_points(files["-o level " + std::to_string(k)], oriented_points(level));
     write_seconds += seconds_since(t_write);
     level_summary(in.coarser_d[k], s, path);
   });
   if (!in.coarser_d.empty()) level_summary(in.d, stats, out_path);
 
   const auto t_write = std::chrono::steady_clock::now();
-  write_points(out_path, oriented_points(records));
+  write_points(files["-o"], oriented_points(records));
   write_seconds += seconds_since(t_write);
 
   if (args.has("--json")) {
@@ -102,7 +114,7 @@ int command_sum(int argc, char** argv)
       for (std::size_t k = 0; k < levels.size(); ++k) list += (k ? ", " : "") + levels[k];
       j.add("levels", list + "]");
     }
-    write_json(args.values.at("--json"), j);
+    write_json(files["--json"], j);
   }
   if (!in.quiet)
     std::cerr << "pmsum: " << records.size() << " points written to " << out_path << " ("
@@ -140,6 +152,9 @@ int command_offset(int argc, char** argv)
   if (!(r > 0) || !std::isfinite(r) || !(d > 0) || !std::isfinite(d)) throw Usage_error("-r and -d must be positive numbers");
   const double error = args.has("--sphere-error") ? args.number("--sphere-error") : 0.02;
   if (!(error > 0 && error < 1)) throw Usage_error("--sphere-error must be in (0, 1)");
+  std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
+  if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
+  Output_files files(outputs, args.positional);
   const bool quiet = args.flag("--quiet");
   const auto start = std::chrono::steady_clock::now();
   Mesh P = read_mesh(args.positional[0], "MESH", quiet);
@@ -172,14 +187,14 @@ int command_offset(int argc, char** argv)
     if (args.has("--threads")) in.threads = int(args.number("--threads"));
     points = oriented_points(compute_sum(in, stats));
   }
-  write_points(out_path, points);
+  write_points(files["-o"], points);
   if (args.has("--json")) {
     Json j;
     j.str("command", "offset").str("mesh", args.positional[0]).boolean("erode", args.flag("--erode"))
       .str("structuring_element", args.flag("--cube") ? "cube" : "icosphere").num("r", r)
       .num("ball_inradius", inner).integer("ball_faces", B.number_of_faces()).num("d", d)
       .integer("output_points", points.size()).num("seconds", seconds_since(start));
-    write_json(args.values.at("--json"), j);
+    write_json(files["--json"], j);
   }
   if (!quiet)
     std::cerr << "pmsum: " << points.size() << " points written to " << out_path << "; every point at distance in ["
@@ -221,6 +236,9 @@ int command_pd(int argc, char** argv)
   const Arguments args(int(rest.size()), rest.data(), 2, valued, sum_flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << pd_help; return 0; }
   if (at.empty()) throw Usage_error("pd needs at least one --at X Y Z");
+  std::vector<std::pair<std::string, std::string>> outputs;
+  if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
+  Output_files files(outputs, args.positional);
   const Sum_input in = read_sum_input(args);
   const auto t_build = std::chrono::steady_clock::now();
   auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(in.P, in.Q, in.d);
@@ -241,7 +259,7 @@ int command_pd(int argc, char** argv)
     j.str("command", "pd").str("p", in.p_path).str("q", in.q_path).num("d", in.d)
       .integer("contact_points", pd.number_of_contact_points()).integer("queries", at.size())
       .num("seconds_build", build_seconds).num("seconds_queries", query_seconds);
-    write_json(args.values.at("--json"), j);
+    write_json(files["--json"], j);
   }
   return 0;
 }
@@ -265,6 +283,11 @@ int command_sweep(int argc, char** argv)
   const std::string out_path = points_output_path(args);
   double d = args.number("-d");
   if (!(d > 0) || !std::isfinite(d)) throw Usage_error("-d must be a positive number");
+  std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
+  if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
+  std::vector<std::string> inputs = args.positional;
+  inputs.push_back(args.values.at("--path"));
+  Output_files files(outputs, inputs);
   const auto start = std::chrono::steady_clock::now();
   const Mesh P = read_mesh(args.positional[0], "MESH", args.flag("--quiet"));
   std::ifstream in(args.values.at("--path"));
@@ -293,13 +316,13 @@ int command_sweep(int argc, char** argv)
   });
   std::vector<Oriented_point> out;
   for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
-  write_points(out_path, out);
+  write_points(files["-o"], out);
   if (args.has("--json")) {
     Json j;
     j.str("command", "sweep").str("mesh", args.positional[0]).str("path", args.values.at("--path"))
       .integer("path_points", path.size()).num("d", d).integer("candidates", stats.candidates)
       .integer("cd_queries", stats.cd_queries).integer("output_points", pts.size()).num("seconds", seconds_since(start));
-    write_json(args.values.at("--json"), j);
+    write_json(files["--json"], j);
   }
   if (!args.flag("--quiet")) std::cerr << "pmsum: " << pts.size() << " points written to " << out_path << "\n";
   return 0;
@@ -370,6 +393,10 @@ int command_plan(int argc, char** argv)
     threads = int(t);
   }
   const bool quiet = args.flag("--quiet");
+  std::vector<std::pair<std::string, std::string>> outputs;
+  if (args.has("-o")) outputs.push_back({"-o", args.values.at("-o")});
+  if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
+  Output_files files(outputs, args.positional);
   const auto start = std::chrono::steady_clock::now();
   const Mesh R = read_mesh(args.positional[0], "ROBOT", quiet);
   const Mesh O = read_mesh(args.positional[1], "OBSTACLE", quiet);
@@ -390,7 +417,7 @@ int command_plan(int argc, char** argv)
       .integer("edges_invalid", st.edges_invalid).integer("searches", st.search_iterations)
       .num("seconds_contact_space", st.seconds_contact_space).num("seconds_roadmap", st.seconds_roadmap)
       .num("seconds_query", st.seconds_query).num("seconds", seconds_since(start));
-    write_json(args.values.at("--json"), j);
+    write_json(files["--json"], j);
   }
   if (!r.found) {
     std::cerr << "pmsum: no path found: start and goal are not connected in the roadmap of " << st.nodes
@@ -401,10 +428,7 @@ int command_plan(int argc, char** argv)
   text << std::setprecision(17);
   for (const auto& t : r.path) text << t.x() << ' ' << t.y() << ' ' << t.z() << '\n';
   std::cout << text.str();
-  if (args.has("-o")) {
-    std::ofstream out(args.values.at("-o"));
-    if (!(out << text.str())) throw Error("cannot write '" + args.values.at("-o") + "'");
-  }
+  if (args.has("-o")) files["-o"].write([&](std::ostream& os) { os << text.str(); });
   if (!quiet)
     std::cerr << "pmsum: path of " << r.path.size() << " vertices, length " << std::setprecision(6) << r.length << " ("
               << st.contact_points << " contact points, " << std::setprecision(3) << seconds_since(start) << " s)\n";
@@ -422,13 +446,14 @@ int command_generate(int argc, char** argv)
   }
   if (args.positional.size() != 1) throw Usage_error("generate needs one shape name");
   if (!args.has("-o")) throw Usage_error("generate needs -o OUT.off");
+  Output_files files({{"-o", args.values.at("-o")}}, {});
   pmsum_test::Soup s;
   try {
     s = pmsum_test::shape_preset(args.positional[0]);
   } catch (const std::invalid_argument& e) {
     throw Usage_error(e.what());
   }
-  if (!pmsum_test::write_off(s, args.values.at("-o"))) throw Error("cannot write '" + args.values.at("-o") + "'");
+  files["-o"].write([&](std::ostream& os) { pmsum_test::write_off(s, os); });
   return 0;
 }
 
@@ -438,6 +463,7 @@ int command_generate(int argc, char** argv)
 int main(int argc, char** argv)
 {
   using namespace pmsum_cli;
+  install_signal_cleanup();
   try {
     if (argc < 2) { std::cerr << usage_text; return 2; }
     const std::string command = argv[1];
@@ -456,6 +482,9 @@ int main(int argc, char** argv)
     return 2;
   } catch (const Refused& e) {
     std::cerr << "pmsum: " << e.what() << "\n";
+    return 3;
+  } catch (const CGAL::Pmsum::Too_large& e) {
+    std::cerr << "pmsum: refused: " << e.what() << " (use a larger -d)\n";
     return 3;
   } catch (const CGAL::Pmsum::Invalid_input& e) {
     std::cerr << "pmsum: error: " << e.what() << "\n";

@@ -56,13 +56,11 @@ inline Soup shape_preset(const std::string& name)
 }
 
 /// Writes a soup as OFF with exact (round-trip) coordinates.
-inline bool write_off(const Soup& s, const std::string& path)
+inline void write_off(const Soup& s, std::ostream& o)
 {
-  std::ofstream o(path);
   o << std::setprecision(17) << "OFF\n" << s.points.size() << ' ' << s.triangles.size() << " 0\n";
   for (const auto& p : s.points) o << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   for (const auto& t : s.triangles) o << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  return bool(o);
 }
 
 } // namespace pmsum_test

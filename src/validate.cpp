@@ -40,6 +40,16 @@ int command_validate(int argc, char** argv)
   valued.insert(valued.end(), {"--exact", "--save-exact", "--save-exact-off", "--points", "--shell-points", "--json"});
   const Arguments args(argc, argv, 2, valued, sum_flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << validate_help; return 0; }
+  std::vector<std::pair<std::string, std::string>> outputs;
+  for (const char* o : {"--points", "--shell-points", "--save-exact", "--save-exact-off", "--json"})
+    if (args.has(o)) outputs.push_back({o, args.values.at(o)});
+  if (args.has("--points")) {
+    const std::string e = extension(args.values.at("--points"));
+    if (e != "ply" && e != "xyz") throw Usage_error("--points must name a .ply or .xyz file");
+  }
+  std::vector<std::string> inputs = args.positional;
+  if (args.has("--exact")) inputs.push_back(args.values.at("--exact"));
+  Output_files files(outputs, inputs);
   const auto t_start = std::chrono::steady_clock::now();
   const Sum_input in = read_sum_input(args);
 
@@ -48,7 +58,7 @@ int command_validate(int argc, char** argv)
   const auto t_ours = std::chrono::steady_clock::now();
   const std::vector<Record> records = compute_sum(in, stats);
   const double ours_seconds = seconds_since(t_ours);
-  if (args.has("--points")) write_points(args.values.at("--points"), oriented_points(records));
+  if (args.has("--points")) write_points(files["--points"], oriented_points(records));
 
   // The exact boundary.
   std::unique_ptr<CGAL::Pmsum::Nef_minkowski_sum_reference> ref;
@@ -60,20 +70,16 @@ int command_validate(int argc, char** argv)
     if (!in.quiet) std::cerr << "pmsum: computing the exact sum with CGAL::minkowski_sum_3 (may take minutes)\n";
     ref = std::make_unique<CGAL::Pmsum::Nef_minkowski_sum_reference>(in.P, in.Q, in.negate);
   }
-  if (args.has("--save-exact")) {
-    std::ofstream f(args.values.at("--save-exact"));
-    ref->save(f);
-    if (!f) throw Error("cannot write '" + args.values.at("--save-exact") + "'");
-  }
+  if (args.has("--save-exact")) files["--save-exact"].write([&](std::ostream& f) { ref->save(f); });
   if (args.has("--save-exact-off")) {
     std::vector<std::array<double, 3>> pts;
     std::vector<std::array<std::size_t, 3>> tris;
     ref->triangle_soup(pts, tris);
-    std::ofstream f(args.values.at("--save-exact-off"));
-    f << std::setprecision(17) << "OFF\n" << pts.size() << ' ' << tris.size() << " 0\n";
-    for (const auto& p : pts) f << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-    for (const auto& t : tris) f << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-    if (!f) throw Error("cannot write '" + args.values.at("--save-exact-off") + "'");
+    files["--save-exact-off"].write([&](std::ostream& f) {
+      f << std::setprecision(17) << "OFF\n" << pts.size() << ' ' << tris.size() << " 0\n";
+      for (const auto& p : pts) f << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+      for (const auto& t : tris) f << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    });
   }
 
   // Exactness: every point, from its exact representation.
@@ -111,17 +117,18 @@ int command_validate(int argc, char** argv)
         }
       trees.push_back(std::make_unique<Search::Tree>(sp.begin(), sp.end()));
     }
-    std::ofstream f(args.values.at("--shell-points"));
-    f << std::setprecision(9);
-    for (const auto& p : points) {
-      std::size_t best = 0;
-      double best_d = HUGE_VAL;
-      for (std::size_t i = 0; i < trees.size(); ++i) {
-        Search s(*trees[i], p, 1);
-        if (s.begin() != s.end() && s.begin()->second < best_d) { best_d = s.begin()->second; best = i; }
+    files["--shell-points"].write([&](std::ostream& f) {
+      f << std::setprecision(9);
+      for (const auto& p : points) {
+        std::size_t best = 0;
+        double best_d = HUGE_VAL;
+        for (std::size_t i = 0; i < trees.size(); ++i) {
+          Search s(*trees[i], p, 1);
+          if (s.begin() != s.end() && s.begin()->second < best_d) { best_d = s.begin()->second; best = i; }
+        }
+        f << p.x() << ' ' << p.y() << ' ' << p.z() << " 0 0 0 " << best << '\n';
       }
-      f << p.x() << ' ' << p.y() << ' ' << p.z() << " 0 0 0 " << best << '\n';
-    }
+    });
   }
 
   std::size_t covered = 0, voids = 0;
@@ -169,7 +176,7 @@ int command_validate(int argc, char** argv)
       .num("worst_coverage_over_d", worst)
       .num("minimum_spacing_over_d", spacing).num("ideal_points", ideal).num("points_over_ideal", double(records.size()) / ideal).add("shell_coverage", arr).boolean("nef_from_file", args.has("--exact"))
       .object("seconds", seconds).boolean("ok", ok);
-    write_json(args.values.at("--json"), j);
+    write_json(files["--json"], j);
   }
   return ok ? 0 : 4;
 }

@@ -24,6 +24,7 @@ expect_fail() {
   if ! grep -q -- "$pattern" "$work/stderr"; then ko "stderr lacks '$pattern': pmsum $*"; cat "$work/stderr"; return; fi
   if [ "$(grep -vc "note:" "$work/stderr")" -gt 1 ]; then ko "error is not one line: pmsum $*"; cat "$work/stderr"; return; fi
   if ls "$work"/out.* > /dev/null 2>&1; then ko "output file left behind: pmsum $*"; return; fi
+  if ls "$work"/.pmsum-* > /dev/null 2>&1; then ko "temporary file left behind: pmsum $*"; rm -f "$work"/.pmsum-*; return; fi
   ok
 }
 
@@ -163,7 +164,147 @@ expect_fail 2 "unknown option" -- sum "$cube" "$tet" -d 0.1 -o "$work/out.ply" -
 expect_fail 2 "two meshes"    -- sum "$cube" -d 0.1 -o "$work/out.ply"
 expect_fail 2 "unknown command" -- frobnicate
 expect_fail 3 "candidate points" -- sum "$data/knot1.off" "$data/elephant.off" -d 0.00002 --relative -o "$work/out.ply"
-expect_fail 1 "too small"     -- sum "$cube" "$tet" -d 1e-9 -o "$work/out.ply" --force
+# a covering distance too small for the sample lattice is a refusal for size (exit 3), --force or not
+expect_fail 3 "refused: d is too small" -- sum "$cube" "$tet" -d 1e-9 -o "$work/out.ply" --force
+expect_fail 3 "refused: d is too small" -- sum "$cube" "$tet" -d 1e-12 -o "$work/out.ply"
+# without the normal filter, the feature pairs are counted before they are stored
+expect_fail 3 "without the normal filter, the 19200 x 19200 feature pairs" -- \
+  sum "$data/knot1.off" "$data/knot1.off" -d 0.01 --relative --no-normal-filter -o "$work/out.ply"
+
+# --- hostile mesh files (issue 11) ------------------------------------------------------
+# Face indices out of range, in every reader: refused before any mesh is built.
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 99\n3 0 3 2\n' > "$work/index.off"
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 -1\n3 0 3 2\n' > "$work/negative.off"
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 2\n3 0 3 2\n' > "$work/repeated.off"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 9\nf 1 4 3\n' > "$work/index.obj"
+ply_header='ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n'
+printf "${ply_header}0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 7\n3 0 3 2\n" > "$work/index.ply"
+printf "${ply_header}0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n" > "$work/tet.ply"
+python3 - "$work" <<'PY'
+import struct, sys
+w = sys.argv[1]
+pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+def ply(faces, count='uchar', nfaces=None, tail=b''):
+    h = ("ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+         "property float z\nelement face %d\nproperty list %s int vertex_indices\nend_header\n"
+         % (len(faces) if nfaces is None else nfaces, count)).encode()
+    c = {'uchar': 'B', 'uint': 'I'}[count]
+    body = b''.join(struct.pack('<3f', *p) for p in pts)
+    for n, f in faces:
+        body += struct.pack('<' + c, n) + struct.pack('<%di' % len(f), *f)
+    return h + body + tail
+good = [(3, (0, 2, 1)), (3, (0, 1, 3)), (3, (1, 2, 3)), (3, (0, 3, 2))]
+open(w + '/bin_index.ply', 'wb').write(ply([(3, (0, 2, 1)), (3, (0, 1, 3)), (3, (1, 2, 1000)), (3, (0, 3, 2))]))
+open(w + '/bin_negative.ply', 'wb').write(ply([(3, (0, 2, 1)), (3, (0, 1, 3)), (3, (1, 2, -5)), (3, (0, 3, 2))]))
+open(w + '/bin_list.ply', 'wb').write(ply([(3, (0, 2, 1)), (2000000000, (0, 1, 2))], count='uint'))
+open(w + '/bin_faces.ply', 'wb').write(ply(good, nfaces=400000000))
+open(w + '/bin_tail.ply', 'wb').write(ply(good, tail=b'\0' * 16))
+# a unit cube: 12 triangles
+cube = [(i & 1, (i >> 1) & 1, (i >> 2) & 1) for i in range(8)]
+tris = []
+for a, b, c, d in [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]:
+    tris += [(a, b, c), (a, c, d)]
+def stl(declared, tris):
+    body = b''.join(struct.pack('<3f', 0, 0, 0) + b''.join(struct.pack('<3f', *cube[i]) for i in t) + b'\0\0' for t in tris)
+    return b'binary cube'.ljust(80, b' ') + struct.pack('<I', declared) + body
+open(w + '/cube.stl', 'wb').write(stl(12, tris))
+open(w + '/cube_3_of_12.stl', 'wb').write(stl(3, tris))
+open(w + '/cube_huge.stl', 'wb').write(stl(1000000000, tris[:1]))
+off = "OFF\n8 %d 0\n" + "".join("%d %d %d\n" % p for p in cube) + "".join("3 %d %d %d\n" % t for t in tris)
+open(w + '/cube_4_of_12.off', 'w').write(off % 4)
+open(w + '/cube_comment.off', 'w').write(off % 12 + "# a comment after the faces\n\n")
+PY
+expect_fail 1 "face 2 names vertex 99"       -- sum "$work/index.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "negative index"               -- sum "$work/negative.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "fewer than three distinct"    -- sum "$work/repeated.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "face 2 names vertex 8"        -- sum "$work/index.obj" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "face 2 names vertex 7"        -- sum "$tet" "$work/index.ply" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "face 2 names vertex 1000"     -- sum "$work/bin_index.ply" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "negative index"               -- sum "$work/bin_negative.ply" "$tet" -d 0.1 -o "$work/out.ply"
+"$pmsum" sum "$work/tet.ply" "$work/cube.stl" -d 0.2 -o "$work/good.xyz" --quiet && ok || ko "ASCII PLY + binary STL"
+# Counts the file cannot hold: refused before anything is allocated (a 45-byte OFF whose
+# face claims 2e9 vertices; headers declaring 4e8 faces; a list of 2e9 indices; 1e9 triangles).
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n' > "$work/huge_face.off"
+printf 'OFF\n3 400000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$work/huge_count.off"
+expect_fail 1 "face 0 declares 2000000000 vertices" -- sum "$work/huge_face.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "400000000 faces, more than a file of" -- sum "$work/huge_count.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "400000000 face, more than"    -- sum "$work/bin_faces.ply" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "list of 2000000000 values"    -- sum "$work/bin_list.ply" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "declares 1000000000 triangles" -- sum "$work/cube_huge.stl" "$tet" -d 0.1 -o "$work/out.ply"
+# More data than the header declares.
+expect_fail 1 "more data than its OFF header declares (8 vertices, 4 faces)" -- sum "$work/cube_4_of_12.off" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "binary STL declares 3 triangles" -- sum "$work/cube_3_of_12.stl" "$tet" -d 0.1 -o "$work/out.ply"
+expect_fail 1 "more data than its PLY header" -- sum "$work/bin_tail.ply" "$tet" -d 0.1 -o "$work/out.ply"
+"$pmsum" sum "$work/cube_comment.off" "$tet" -d 0.2 -o "$work/good.xyz" --quiet && ok || ko "comment after the faces"
+
+# Solids: overlapping closed components and a self-intersecting one are refused; an outward
+# box plus a disjoint inward one is reoriented (with a note); a void stays a void.
+python3 - "$work" <<'PY'
+import sys
+w = sys.argv[1]
+def off(name, boxes):
+    P, F = [], []
+    for lo, hi, inward in boxes:
+        o = len(P)
+        P += [(hi[0] if i & 1 else lo[0], hi[1] if i & 2 else lo[1], hi[2] if i & 4 else lo[2]) for i in range(8)]
+        for q in [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]:
+            F.append([o + i for i in (q[::-1] if inward else q)])
+    open(w + '/' + name, 'w').write("OFF\n%d %d 0\n" % (len(P), len(F)) + "".join("%g %g %g\n" % p for p in P)
+                                    + "".join("4 " + " ".join(map(str, f)) + "\n" for f in F))
+off('three_cubes.off', [((0, 0, 0), (2, 2, 2), 0), ((1, 1, 1), (3, 3, 3), 0), ((1, 0.5, 0.5), (4, 1.5, 1.5), 0)])
+off('two_boxes.off', [((0, 0, 0), (2, 2, 2), 0), ((3, 0, 0), (4, 1, 1), 1)])
+off('void.off', [((0, 0, 0), (5, 5, 5), 0), ((1, 1, 1), (4, 4, 4), 1)])
+PY
+printf 'OFF\n8 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n0.25 0.5 -1\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n' > "$work/self_intersecting.off"
+expect_fail 1 "P components 0 and 1 overlap" -- sum "$work/three_cubes.off" "$tet" -d 0.2 -o "$work/out.ply"
+expect_fail 1 "Q component 0 intersects itself" -- sum "$tet" "$work/self_intersecting.off" -d 0.2 -o "$work/out.ply"
+"$pmsum" sum "$work/two_boxes.off" "$tet" -d 0.2 -o "$work/good.xyz" 2> "$work/stderr"
+if [ $? = 0 ] && grep -q "reversed 12 of 24 faces" "$work/stderr"; then ok; else ko "outward box + inward box"; cat "$work/stderr"; fi
+"$pmsum" sum "$work/void.off" "$tet" -d 0.2 -o "$work/good.xyz" 2> "$work/stderr"
+if [ $? = 0 ] && ! grep -q "void.off') was not oriented" "$work/stderr"; then ok; else ko "box with a void"; cat "$work/stderr"; fi
+
+# --- output paths (issue 11) -------------------------------------------------------------
+# An output naming an input (by any path) is refused before any work; the input is untouched.
+for f in tet.ply pocket.off path.txt cube.off; do cp "$work/$f" "$work/$f.copy"; done
+ln -s "$work/tet.ply" "$work/tet_link.ply"
+expect_fail 2 "is the input file"            -- sum "$work/tet.ply" "$cube" -d 0.2 -o "$work/tet.ply"
+expect_fail 2 "is the input file"            -- sum "$cube" "$work/tet.ply" -d 0.2 -o "$work/./tet_link.ply"
+expect_fail 2 "is the input file"            -- sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --json "$cube"
+expect_fail 2 "is the input file"            -- plan "$cube" "$work/pocket.off" --start 0 0 0 --goal 3 3 3 -d 0.5 -o "$work/pocket.off"
+expect_fail 2 "is the input file"            -- sweep "$cube" --path "$work/path.txt" -d 0.1 -o "$work/out.xyz" --json "$work/path.txt"
+expect_fail 2 "name the same file"           -- sum "$cube" "$tet" -d 0.2 -o "$work/out.xyz" --json "$work/out.xyz"
+for f in tet.ply pocket.off path.txt cube.off; do cmp -s "$work/$f" "$work/$f.copy" && ok || ko "input $f was changed"; done
+[ -L "$work/tet_link.ply" ] && ok || ko "the symbolic link to an input was replaced"
+# Every output path is checked before the work: nothing is computed, nothing left behind.
+expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 -o "$work/missing/out.ply"
+expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --json "$work/missing/out.json"
+expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 --levels 0.4 -o "$work/missing/out.ply"
+expect_fail 1 "no such directory"            -- validate "$cube" "$tet" -d 0.2 --points "$work/out.xyz" --json "$work/missing/v.json"
+expect_fail 1 "no such directory"            -- validate "$cube" "$tet" -d 0.2 --save-exact-off "$work/missing/e.off"
+expect_fail 1 "no such directory"            -- offset "$cube" -r 0.1 -d 0.05 -o "$work/out.xyz" --json "$work/missing/o.json"
+expect_fail 1 "no such directory"            -- sweep "$cube" --path "$work/path.txt" -d 0.1 -o "$work/missing/out.xyz"
+expect_fail 1 "no such directory"            -- pd "$cube" "$cube" -d 0.05 --at 0.1 0 0 --json "$work/missing/pd.json"
+expect_fail 1 "no such directory"            -- plan "$cube" "$work/pocket.off" --start 0 0 0 --goal 3 3 3 -d 0.5 -o "$work/missing/p.txt"
+expect_fail 1 "no such directory"            -- generate plates -o "$work/missing/plates.off"
+# A valid 250-character output name (the temporary file's name is short whatever it is).
+long="$work/$(printf 'a%.0s' $(seq 246)).xyz"
+"$pmsum" sum "$cube" "$tet" -d 0.2 -o "$long" --quiet && [ -s "$long" ] && ok || ko "250-character output name"
+rm -f "$long"
+# SIGTERM and SIGINT during a run: the temporary file is removed, exit code 128 + signal.
+"$pmsum" sum "$data/knot1.off" "$data/elephant.off" -d 0.005 --relative -o "$work/out.ply" --quiet &
+pid=$!
+sleep 1
+kill -TERM $pid
+wait $pid
+got=$?
+if [ $got = 143 ] && ! ls "$work"/out.* "$work"/.pmsum-* > /dev/null 2>&1; then ok; else ko "SIGTERM: exit $got or files left"; ls -a "$work"; fi
+got=$(python3 -c '
+import signal, subprocess, sys, time
+p = subprocess.Popen(sys.argv[1:])
+time.sleep(1)
+p.send_signal(signal.SIGINT)
+print(p.wait())' "$pmsum" sum "$data/knot1.off" "$data/elephant.off" -d 0.005 --relative -o "$work/out.ply" --quiet)
+if [ "$got" = 130 ] && ! ls "$work"/out.* "$work"/.pmsum-* > /dev/null 2>&1; then ok; else ko "SIGINT: exit $got or files left"; ls -a "$work"; fi
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" = 0 ]

@@ -1,8 +1,15 @@
 // Bad input: a clear exception, nothing written to the output.
+//
+// CGAL's assertions are on in this translation unit whatever the build type, so that every
+// check here gives the same exception as in a release build (not CGAL::Precondition_exception).
+#undef NDEBUG
+#undef CGAL_NDEBUG
 #include "test_support.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Random.h>
+#include <CGAL/intersections.h>
 
 #include <catch2/catch.hpp>
 
@@ -36,7 +43,7 @@ std::string error_of(const MeshP& P, const MeshQ& Q, double d, const NP& np = CG
   } catch (const CGAL::Pmsum::Invalid_input& e) {
     CHECK(written == 0);
     return e.what();
-  } catch (const CGAL::Pmsum::Too_many_candidates& e) {
+  } catch (const CGAL::Pmsum::Too_large& e) {
     CHECK(written == 0);
     return e.what();
   }
@@ -102,13 +109,171 @@ TEST_CASE("inward oriented solid", "[errors]")
   CHECK_THAT(error_of(m, cube, 0.1), Contains("P is oriented inward"));
 }
 
-TEST_CASE("a d that needs too many subdivisions", "[errors]")
+TEST_CASE("a d that needs too many subdivisions is a refusal for size, not bad input", "[errors]")
 {
-  CHECK_THAT(error_of(cube, cube, 1e-9), Contains("d is too small for P"));
+  std::size_t written = 0;
+  try {
+    CGAL::point_minkowski_sum(cube, cube, 1e-12, Counter{&written});
+    FAIL("no exception");
+  } catch (const CGAL::Pmsum::Covering_distance_too_small& e) {
+    CHECK_THAT(std::string(e.what()), Contains("d is too small for P"));
+    CHECK(dynamic_cast<const CGAL::Pmsum::Too_large*>(&e) != nullptr);
+  }
+  CHECK(written == 0);
 }
 
 TEST_CASE("candidate limit", "[errors]")
 {
   const std::string msg = error_of(cube, cube, 0.01, CGAL::parameters::maximum_number_of_candidates(1000));
   CHECK_THAT(msg, Contains("more than the limit of 1000"));
+}
+
+TEST_CASE("without the normal filter, the feature pairs are counted before they are stored", "[errors]")
+{
+  // 38 features per cube (8 vertices, 18 edges, 12 triangles): 38 x 38 pairs, each with the facet directions around both features
+  std::string msg;
+  try {
+    std::size_t written = 0;
+    CGAL::point_minkowski_sum(cube, cube, 0.5, Counter{&written},
+                              CGAL::parameters::use_normal_filter(false).maximum_number_of_candidates(1000));
+    FAIL("no exception");
+  } catch (const CGAL::Pmsum::Too_many_feature_pairs& e) {
+    msg = e.what();
+    CHECK(e.limit == 1000);
+  }
+  CHECK_THAT(msg, Contains("without the normal filter, the 38 x 38 feature pairs"));
+  CHECK_THAT(msg, Contains("more than the limit of 1000"));
+  // within the limit, the run goes on
+  std::vector<IK::Point_3> out;
+  CGAL::point_minkowski_sum(cube, cube, 0.5, std::back_inserter(out),
+                            CGAL::parameters::use_normal_filter(false).maximum_number_of_candidates(100000));
+  CHECK(out.size() > 8);
+}
+
+namespace {
+/// The soup with every triangle reversed (a void, when nested in a solid).
+Soup reversed(Soup s)
+{
+  for (auto& t : s.triangles) std::swap(t[1], t[2]);
+  return s;
+}
+Mesh mesh_of(const std::vector<Soup>& parts)
+{
+  Soup s;
+  for (const Soup& p : parts) s.append(p);
+  return to_mesh<Mesh>(s);
+}
+/// Runs the sum with Q = cube; true if it succeeds with output.
+bool accepted(const Mesh& P)
+{
+  std::vector<IK::Point_3> out;
+  CGAL::point_minkowski_sum(P, cube, 0.5, std::back_inserter(out));
+  return !out.empty();
+}
+} // namespace
+
+TEST_CASE("overlapping closed components", "[errors]")
+{
+  // three mutually overlapping cubes (the example)
+  const Mesh three = mesh_of({box({0, 0, 0}, {2, 2, 2}), box({1, 1, 1}, {3, 3, 3}), box({1, 0.5, 0.5}, {4, 1.5, 1.5})});
+  CHECK_THAT(error_of(three, cube, 0.5), Contains("P components 0 and 1 overlap (faces"));
+  CHECK_THAT(error_of(cube, three, 0.5), Contains("Q components 0 and 1 overlap"));
+  // the same cube twice: coincident faces on the same side
+  CHECK_THAT(error_of(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({0, 0, 0}, {1, 1, 1})}), cube, 0.5),
+             Contains("P components 0 and 1 overlap"));
+  // a cube sharing the bottom face of a larger one and inside it
+  CHECK_THAT(error_of(mesh_of({box({0, 0, 0}, {2, 2, 2}), box({0, 0, 0}, {1, 1, 1})}), cube, 0.5),
+             Contains("P components 0 and 1 overlap"));
+  // an outward cube strictly inside another: nested solids, not a void
+  CHECK_THAT(error_of(mesh_of({box({0, 0, 0}, {3, 3, 3}), box({1, 1, 1}, {2, 2, 2})}), cube, 0.5),
+             Contains("P components 0 and 1 overlap: 1 lies inside 0 and both are oriented outward"));
+  // with check_overlaps(false) the caller vouches for the input: no check, no error
+  std::vector<IK::Point_3> out;
+  CHECK_NOTHROW(CGAL::point_minkowski_sum(three, cube, 0.5, std::back_inserter(out),
+                                          CGAL::parameters::check_overlaps(false)));
+}
+
+TEST_CASE("touching and nested closed components are valid", "[errors]")
+{
+  // along a face, along an edge, at a vertex
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})})));
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({1, 1, 0}, {2, 2, 1})})));
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({1, 1, 1}, {2, 2, 2})})));
+  // along part of a face, offset (faces overlap partly, opposite sides)
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {2, 2, 1}), box({1, 1, 1}, {3, 3, 2})})));
+  // a void (inward cube) inside a solid, and a solid inside that void
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {5, 5, 5}), reversed(box({1, 1, 1}, {4, 4, 4}))})));
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {5, 5, 5}), reversed(box({1, 1, 1}, {4, 4, 4})), box({2, 2, 2}, {3, 3, 3})})));
+  // a void touching its shell's inner side along a face
+  CHECK(accepted(mesh_of({box({0, 0, 0}, {5, 5, 5}), reversed(box({0, 1, 1}, {4, 4, 4}))})));
+  // an inward cube inside a void is not valid
+  CHECK_THAT(error_of(mesh_of({box({0, 0, 0}, {5, 5, 5}), reversed(box({1, 1, 1}, {4, 4, 4})),
+                               reversed(box({2, 2, 2}, {3, 3, 3}))}), cube, 0.5),
+             Contains("P component 2 is oriented inward inside the void of component 1"));
+}
+
+TEST_CASE("each closed component is oriented on its own", "[errors]")
+{
+  // an outward box and a disjoint inward box: the total volume is positive
+  const Mesh m = mesh_of({box({0, 0, 0}, {2, 2, 2}), reversed(box({3, 0, 0}, {4, 1, 1}))});
+  CHECK_THAT(error_of(m, cube, 0.5), Contains("P is oriented inward (component 1 has a negative volume)"));
+}
+
+TEST_CASE("a closed mesh that intersects itself", "[errors]")
+{
+  // a cube whose vertex (1,1,1) is pulled through the bottom face to (0.5,0.5,-1)
+  Soup s = box({0, 0, 0}, {1, 1, 1});
+  s.points[7] = {0.25, 0.5, -1};
+  CHECK_THAT(error_of(to_mesh<Mesh>(s), cube, 0.5), Contains("P component 0 intersects itself (faces"));
+}
+
+TEST_CASE("the triangle crossing test against exact intersections", "[errors]")
+{
+  // Reference: the relative interiors meet (non-coplanar: the intersection is a segment whose
+  // midpoint is strictly inside both), or coplanar triangles on the same side overlap with
+  // positive area. Small integer coordinates make many degenerate (touching) pairs.
+  using CGAL::Pmsum::internal::Mesh_data;
+  CGAL::Random rng(11);
+  auto strictly_inside = [](const EK::Triangle_3& t, const EK::Point_3& p) {
+    const auto &a = t[0], &b = t[1], &c = t[2];
+    return CGAL::coplanar(a, b, c, p) && CGAL::coplanar_orientation(a, b, c, p) == CGAL::POSITIVE &&
+           CGAL::coplanar_orientation(b, c, a, p) == CGAL::POSITIVE && CGAL::coplanar_orientation(c, a, b, p) == CGAL::POSITIVE;
+  };
+  std::size_t crossing = 0, touching = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Mesh_data m;
+    const int range = trial % 2 ? 2 : 4;
+    for (int i = 0; i < 6; ++i)
+      m.points.push_back({double(rng.get_int(0, range)), double(rng.get_int(0, range)), double(rng.get_int(0, range))});
+    if (trial % 3 == 0) // coplanar pairs, in z = 0 or x + y + z = range
+      for (auto& p : m.points) p[2] = (trial % 2) ? 0 : range - p[0] - p[1];
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    EK::Point_3 P[6];
+    for (int i = 0; i < 6; ++i) P[i] = EK::Point_3(m.points[i][0], m.points[i][1], m.points[i][2]);
+    const EK::Triangle_3 T1(P[0], P[1], P[2]), T2(P[3], P[4], P[5]);
+    if (T1.is_degenerate() || T2.is_degenerate()) continue;
+    m.components.resize(1);
+    m.triangle_component = {0, 0};
+    m.vertex_component.assign(6, 0);
+    const bool got = CGAL::Pmsum::internal::Solid_checker(m, "P").triangles_cross(0, 1);
+
+    bool expected = false;
+    if (const auto x = CGAL::intersection(T1, T2)) {
+      if (const EK::Segment_3* s = boost::get<EK::Segment_3>(&*x)) {
+        const EK::Point_3 mid = CGAL::midpoint(s->source(), s->target());
+        const bool coplanar = CGAL::coplanar(P[0], P[1], P[2], P[3]) && CGAL::coplanar(P[0], P[1], P[2], P[4]) &&
+                              CGAL::coplanar(P[0], P[1], P[2], P[5]);
+        expected = !coplanar && strictly_inside(T1, mid) && strictly_inside(T2, mid);
+      } else if (!boost::get<EK::Point_3>(&*x)) { // a triangle or polygon: coplanar, positive area
+        expected = CGAL::scalar_product(T1.supporting_plane().orthogonal_vector(),
+                                        T2.supporting_plane().orthogonal_vector()) > 0;
+      }
+      touching += !expected;
+    }
+    crossing += expected;
+    INFO("trial " << trial << ": " << T1 << " / " << T2);
+    REQUIRE(got == expected);
+  }
+  CHECK(crossing > 1000);
+  CHECK(touching > 500);
 }

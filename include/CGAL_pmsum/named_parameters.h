@@ -27,6 +27,7 @@ enum negate_first_mesh_t { negate_first_mesh };
 enum statistics_t { statistics };
 enum treat_as_surface_t { treat_as_surface };
 enum maximum_number_of_candidates_t { maximum_number_of_candidates };
+enum check_overlaps_t { check_overlaps };
 } // namespace internal_np
 
 /// Named parameter pack that also offers the CGAL_pmsum parameters as member functions.
@@ -78,6 +79,13 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   /// of a robot P translating among obstacles Q.
   Named_parameters<bool, internal_np::negate_first_mesh_t, Named_parameters>
   negate_first_mesh(bool b) const { return {b, *this}; }
+
+  /// Check that the closed components of P and Q intersect neither themselves nor each
+  /// other (default `true`; exact, with boxes first: see the precondition of
+  /// point_minkowski_sum()). `false` skips it for input known to be valid; then only the
+  /// sign of each mesh's total volume is checked, and overlapping input gives wrong output.
+  Named_parameters<bool, internal_np::check_overlaps_t, Named_parameters>
+  check_overlaps(bool b) const { return {b, *this}; }
 };
 
 } // namespace Pmsum
@@ -103,6 +111,10 @@ use_covering_net(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_
 /// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>
 negate_first_mesh(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::check_overlaps
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::check_overlaps_t>
+check_overlaps(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::check_overlaps_t>(b); }
 
 /// \copydoc CGAL::Pmsum::Named_parameters::treat_as_surface
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::treat_as_surface_t>

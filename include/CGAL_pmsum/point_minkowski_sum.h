@@ -98,10 +98,11 @@ struct Prepared_sum
 
     check_covering_distance(d);
     start = Clock::now();
+    const bool check_overlaps = choose_parameter(get_parameter(np_p, internal_np::check_overlaps), true);
     mp = make_mesh_data(P, vpm_p, negate_p, choose_parameter(get_parameter(np_p, internal_np::treat_as_surface), false),
-                        "P", desc_p);
+                        "P", desc_p, check_overlaps);
     mq = make_mesh_data(Q, vpm_q, false, choose_parameter(get_parameter(np_q, internal_np::treat_as_surface), false),
-                        "Q", desc_q);
+                        "Q", desc_q, check_overlaps);
   }
 
   /// emit(p, q, direction) for the pipeline: writes a Record, or a Point_3 if `out` takes no
@@ -167,13 +168,14 @@ struct Prepared_sum
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,
-///        `treat_as_surface` (false: closed components of P are solids).
+///        `treat_as_surface` (false: closed components of P are solids), `check_overlaps` (true).
 /// \param np_q named parameters for Q: `vertex_point_map`, `treat_as_surface`.
 ///
 /// \pre `d > 0` and finite
 /// \pre P and Q are non-empty triangle meshes without degenerate faces, with finite
 ///      coordinates exactly representable as `double`; closed components are oriented outward
 ///      and do not overlap each other (touching and nesting are fine).
+/// \pre with `check_overlaps(false)`: closed components known not to cross themselves or each other (not checked).
 /// Violations throw `CGAL::Pmsum::Invalid_input`; nothing is written to `out` then.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMeshP, class PolygonMeshQ,
           class OutputIterator, class NamedParametersP = parameters::Default_named_parameters,

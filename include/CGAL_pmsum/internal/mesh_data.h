@@ -13,6 +13,8 @@
 #include <CGAL_pmsum/exceptions.h>
 #include <CGAL_pmsum/internal/exact_sign.h>
 
+#include <CGAL/Bbox_3.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -157,6 +159,327 @@ inline void build_stars_and_components(Mesh_data& m, bool as_surface)
     if (m.edges[e].f[0] == no_index) m.bare_edges.push_back(e);
 }
 
+/// Sign of the orientation of (a, b, c, k z) against the plane of a, b, c, where the query
+/// point z is `zk / k` (k = 1: a vertex; k = 3: a triangle's centroid, zk the sum of its
+/// vertices): positive on the side of (b - a) x (c - a).
+inline CGAL::Sign side_of_plane(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                const std::array<double, 3>& c, const std::array<std::array<double, 3>, 3>& zk, int k)
+{
+  return filtered_sign([&](auto nt) {
+    using NT = decltype(nt);
+    const Vec3<NT> A = to_nt<NT>(a);
+    Vec3<NT> z = to_nt<NT>(zk[0]);
+    for (int i = 1; i < k; ++i) z = z + to_nt<NT>(zk[i]);
+    return dot(cross(to_nt<NT>(b) - A, to_nt<NT>(c) - A), z - scaled(A, int_nt<NT>(k)));
+  });
+}
+
+/// Checks of the closed components of a mesh: their surfaces cross neither themselves nor
+/// each other (touching along faces, edges or vertices is fine), and each is oriented as its
+/// nesting asks: outward, or inward (a void) inside an odd number of others. Exact.
+class Solid_checker
+{
+public:
+  using P3 = std::array<double, 3>;
+
+  Solid_checker(const Mesh_data& m, const std::string& name)
+    : m(m), name(name), m_triangles(m.components.size()), m_vertices(m.components.size())
+  {
+    for (Index t = 0; t < m.number_of_triangles(); ++t) m_triangles[m.triangle_component[t]].push_back(t);
+    for (Index v = 0; v < m.number_of_vertices(); ++v)
+      if (m.vertex_component[v] != no_index) m_vertices[m.vertex_component[v]].push_back(v);
+  }
+
+  /// Throws Invalid_input on two crossing triangles of closed components.
+  void check_crossings() const
+  {
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Index>;
+    std::vector<Box> boxes;
+    for (Index t = 0; t < m.number_of_triangles(); ++t) {
+      if (!m.triangle_is_closed(t)) continue;
+      CGAL::Bbox_3 b;
+      for (Index v : m.triangles[t]) b += CGAL::Bbox_3(m.points[v][0], m.points[v][1], m.points[v][2],
+                                                     m.points[v][0], m.points[v][1], m.points[v][2]);
+      boxes.emplace_back(b, t);
+    }
+    // the first crossing pair in the order of (components, faces): the same report whatever
+    // order the boxes are visited in
+    std::array<Index, 4> first = {no_index, no_index, no_index, no_index};
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+      const Index s = (std::min)(a.info(), b.info()), t = (std::max)(a.info(), b.info());
+      const Index cs = m.triangle_component[s], ct = m.triangle_component[t];
+      const std::array<Index, 4> key = {(std::min)(cs, ct), (std::max)(cs, ct), s, t};
+      if (key < first && triangles_cross(s, t)) first = key;
+    });
+    if (first[0] == no_index) return;
+    const std::string faces = "(faces " + std::to_string(first[2]) + " and " + std::to_string(first[3]) + " cross)";
+    if (first[0] == first[1])
+      throw Invalid_input(name + " component " + std::to_string(first[0]) + " intersects itself " + faces);
+    throw Invalid_input(name + " components " + std::to_string(first[0]) + " and " + std::to_string(first[1]) +
+                        " overlap " + faces);
+  }
+
+  /// With no crossings: throws Invalid_input unless every closed component has the
+  /// orientation its nesting depth asks for (outward at even depth, inward at odd).
+  void check_orientations() const
+  {
+    const std::size_t nc = m.components.size();
+    std::vector<CGAL::Sign> volume(nc, CGAL::ZERO);
+    for (Index c = 0; c < nc; ++c) {
+      if (!m.components[c].closed) continue;
+      volume[c] = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        NT sum(0);
+        for (Index t : m_triangles[c]) sum = sum + dot(m.point<NT>(m.triangles[t][0]), m.triangle_normal<NT>(t));
+        return sum;
+      });
+    }
+    // parent[c]: the innermost closed component containing c (no_index: none); depth[c]
+    std::vector<std::vector<Index>> containers(nc);
+    for (Index a = 0; a < nc; ++a)
+        for (Index b = 0; b < nc; ++b)
+          if (a != b && m.components[a].closed && m.components[b].closed && box_inside(b, a) && inside(b, a))
+            containers[b].push_back(a);
+    for (Index c = 0; c < nc; ++c) {
+      if (!m.components[c].closed || volume[c] == CGAL::ZERO) continue;
+      const std::size_t depth = containers[c].size();
+      if ((depth % 2 == 0) == (volume[c] == CGAL::POSITIVE)) continue;
+      // the innermost container: the one with the most containers itself
+      Index parent = no_index;
+      for (Index a : containers[c])
+        if (parent == no_index || containers[a].size() > containers[parent].size()) parent = a;
+      const std::string sc = std::to_string(c), sp = std::to_string(parent);
+      if (depth == 0)
+        throw Invalid_input(name + " is oriented inward (component " + sc + " has a negative volume); reverse "
+                            "its face orientation, e.g. with PMP::reverse_face_orientations");
+      if (volume[c] == CGAL::POSITIVE)
+        throw Invalid_input(name + " components " + sp + " and " + sc + " overlap: " + sc + " lies inside " + sp +
+                            " and both are oriented outward (a void must be oriented inward)");
+      throw Invalid_input(name + " component " + sc + " is oriented inward inside the void of component " + sp +
+                          " (a solid inside a void must be oriented outward)");
+    }
+  }
+
+  /// Do the relative interiors of triangles s and t meet in a way that makes their solids
+  /// overlap: a transversal crossing, or coplanar overlapping faces on the same side?
+  bool triangles_cross(Index s, Index t) const
+  {
+    const std::array<P3, 3> T1 = {pt(m.triangles[s][0]), pt(m.triangles[s][1]), pt(m.triangles[s][2])};
+    const std::array<P3, 3> T2 = {pt(m.triangles[t][0]), pt(m.triangles[t][1]), pt(m.triangles[t][2])};
+    std::array<CGAL::Sign, 3> s2, s1; // vertices of T2 against T1's plane, and conversely
+    for (int i = 0; i < 3; ++i) s2[i] = orientation(T1[0], T1[1], T1[2], T2[i]);
+    auto straddles = [](const std::array<CGAL::Sign, 3>& x) {
+      return std::count(x.begin(), x.end(), CGAL::POSITIVE) > 0 && std::count(x.begin(), x.end(), CGAL::NEGATIVE) > 0;
+    };
+    if (s2[0] == CGAL::ZERO && s2[1] == CGAL::ZERO && s2[2] == CGAL::ZERO) {
+      // coplanar: same side (normals agree) and interiors overlapping with positive area,
+      // i.e. no edge line of either triangle leaves the other on its outer closed side
+      const CGAL::Sign same = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        const Vec3<NT> a = to_nt<NT>(T1[0]), b = to_nt<NT>(T2[0]);
+        return dot(cross(to_nt<NT>(T1[1]) - a, to_nt<NT>(T1[2]) - a), cross(to_nt<NT>(T2[1]) - b, to_nt<NT>(T2[2]) - b));
+      });
+      if (same != CGAL::POSITIVE) return false;
+      for (const auto* pair : {&T1, &T2}) {
+        const auto& A = *pair;
+        const auto& B = (pair == &T1) ? T2 : T1;
+        for (int i = 0; i < 3; ++i) {
+          bool separates = true;
+          for (int j = 0; j < 3 && separates; ++j)
+            separates = side_in_plane(A[i], A[(i + 1) % 3], B[j], A.data()) != CGAL::POSITIVE;
+          if (separates) return false;
+        }
+      }
+      return true;
+    }
+    if (!straddles(s2)) return false;
+    for (int i = 0; i < 3; ++i) s1[i] = orientation(T2[0], T2[1], T2[2], T1[i]);
+    if (!straddles(s1)) return false;
+    // Both cross the other's plane: T1 ∩ plane(T2) and T2 ∩ plane(T1) are segments of the
+    // same line; their open interiors overlap iff an end of one lies inside the other
+    // triangle, or both ends of one are on the other's border (the segments are equal).
+    const std::array<Where, 2> e1 = ends(T1, s1, T2), e2 = ends(T2, s2, T1);
+    for (const auto& e : {e1, e2}) {
+      if (e[0] == INSIDE || e[1] == INSIDE) return true;
+      if (e[0] == ON_BORDER && e[1] == ON_BORDER) return true;
+    }
+    return false;
+  }
+
+private:
+  const P3& pt(Index v) const { return m.points[v]; }
+
+  bool box_inside(Index b, Index a) const
+  {
+    const auto &A = m.components[a], &B = m.components[b];
+    for (int i = 0; i < 3; ++i)
+      if (B.min[i] < A.min[i] || B.max[i] > A.max[i]) return false;
+    return true;
+  }
+
+  static CGAL::Sign orientation(const P3& a, const P3& b, const P3& c, const P3& d)
+  {
+    return side_of_plane(a, b, c, {d, d, d}, 1);
+  }
+
+  /// Sign of (b - a) x (x - a) . n: x left of a -> b seen from n's side (x in the plane).
+  static CGAL::Sign side_in_plane(const P3& a, const P3& b, const P3& x, const P3* tri)
+  {
+    return filtered_sign([&](auto nt) {
+      using NT = decltype(nt);
+      const Vec3<NT> A = to_nt<NT>(tri[0]);
+      const Vec3<NT> n = cross(to_nt<NT>(tri[1]) - A, to_nt<NT>(tri[2]) - A);
+      const Vec3<NT> pa = to_nt<NT>(a);
+      return dot(n, cross(to_nt<NT>(b) - pa, to_nt<NT>(x) - pa));
+    });
+  }
+
+  enum Where { OUTSIDE, ON_BORDER, INSIDE };
+
+  /// Where x (in the plane of T) lies relative to triangle T.
+  static Where in_triangle(const P3& x, const std::array<P3, 3>& T)
+  {
+    bool zero = false;
+    for (int i = 0; i < 3; ++i) {
+      const CGAL::Sign s = side_in_plane(T[i], T[(i + 1) % 3], x, T.data());
+      if (s == CGAL::NEGATIVE) return OUTSIDE;
+      zero |= (s == CGAL::ZERO);
+    }
+    return zero ? ON_BORDER : INSIDE;
+  }
+
+  /// Where the segment u v, crossing the plane of T at one point, crosses it relative to T.
+  static Where segment_through(const P3& u, const P3& v, const std::array<P3, 3>& T)
+  {
+    CGAL::Sign first = CGAL::ZERO;
+    bool zero = false;
+    for (int i = 0; i < 3; ++i) {
+      const CGAL::Sign s = orientation(u, v, T[i], T[(i + 1) % 3]);
+      if (s == CGAL::ZERO) { zero = true; continue; }
+      if (first == CGAL::ZERO) first = s;
+      else if (s != first) return OUTSIDE;
+    }
+    return zero ? ON_BORDER : INSIDE;
+  }
+
+  /// The two ends of T1 ∩ plane(T2) (T1 crossing it strictly), each located relative to T2.
+  static std::array<Where, 2> ends(const std::array<P3, 3>& T1, const std::array<CGAL::Sign, 3>& s,
+                                   const std::array<P3, 3>& T2)
+  {
+    std::array<Where, 2> w{};
+    int k = 0;
+    for (int i = 0; i < 3 && k < 2; ++i) {
+      const int j = (i + 1) % 3;
+      if (s[i] == CGAL::ZERO) w[k++] = in_triangle(T1[i], T2);
+      else if (s[j] != CGAL::ZERO && s[i] != s[j]) w[k++] = segment_through(T1[i], T1[j], T2);
+    }
+    return w;
+  }
+
+  /// Is closed component b inside closed component a (their surfaces do not cross)? Decided
+  /// by a vertex of b off a's surface (or a triangle centroid if there is none), by the
+  /// parity of a ray's crossings with a's triangles; rays that meet an edge or a vertex of
+  /// a, or lie in a triangle's plane, are replaced by another.
+  bool inside(Index b, Index a) const
+  {
+    const std::vector<Index>& ta = m_triangles[a];
+    auto classify = [&](const std::array<P3, 3>& zk, int k) -> int { // -1: on a's surface
+      for (Index t : ta) {
+        const auto& tri = m.triangles[t];
+        if (side_of_plane(pt(tri[0]), pt(tri[1]), pt(tri[2]), zk, k) != CGAL::ZERO) continue;
+        bool zero = false, out = false;
+        for (int i = 0; i < 3 && !out; ++i) {
+          const CGAL::Sign si = filtered_sign([&](auto nt) {
+            using NT = decltype(nt);
+            const Vec3<NT> A = to_nt<NT>(pt(tri[0]));
+            const Vec3<NT> n = cross(to_nt<NT>(pt(tri[1])) - A, to_nt<NT>(pt(tri[2])) - A);
+            const Vec3<NT> pa = scaled(to_nt<NT>(pt(tri[i])), int_nt<NT>(k)), pb = scaled(to_nt<NT>(pt(tri[(i + 1) % 3])), int_nt<NT>(k));
+            Vec3<NT> z = to_nt<NT>(zk[0]);
+            for (int j = 1; j < k; ++j) z = z + to_nt<NT>(zk[j]);
+            return dot(n, cross(pb - pa, z - pa));
+          });
+          out = (si == CGAL::NEGATIVE);
+          zero |= (si == CGAL::ZERO);
+        }
+        if (!out) return -1;
+      }
+      // ray parity along pseudo-random directions until one is generic
+      std::uint64_t seed = 0x9E3779B97F4A7C15ull;
+      for (int attempt = 0; attempt < 64; ++attempt) {
+        P3 w;
+        for (double& c : w) {
+          seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+          c = double(std::int64_t(seed >> 11) - (std::int64_t(1) << 52)) / double(std::int64_t(1) << 52);
+        }
+        bool odd = false, degenerate = false;
+        for (Index t : ta) {
+          const auto& tri = m.triangles[t];
+          const P3 &A = pt(tri[0]), &B = pt(tri[1]), &C = pt(tri[2]);
+          const CGAL::Sign toward = filtered_sign([&](auto nt) {
+            using NT = decltype(nt);
+            const Vec3<NT> a = to_nt<NT>(A);
+            return dot(to_nt<NT>(w), cross(to_nt<NT>(B) - a, to_nt<NT>(C) - a));
+          });
+          const CGAL::Sign side = side_of_plane(A, B, C, zk, k);
+          if (toward == CGAL::ZERO) continue; // parallel to the plane, z off it: never meets
+          if (side != -toward) continue;      // z must be behind the plane as seen along w
+          // the line z + s w passes through the triangle iff det[w, P - z, Q - z] agree
+          CGAL::Sign first = CGAL::ZERO;
+          bool miss = false, zero = false;
+          for (int i = 0; i < 3 && !miss; ++i) {
+            const P3 &p = pt(tri[i]), &q = pt(tri[(i + 1) % 3]);
+            const CGAL::Sign si = filtered_sign([&](auto nt) {
+              using NT = decltype(nt);
+              Vec3<NT> z = to_nt<NT>(zk[0]);
+              for (int j = 1; j < k; ++j) z = z + to_nt<NT>(zk[j]);
+              const NT K = int_nt<NT>(k);
+              return dot(to_nt<NT>(w), cross(scaled(to_nt<NT>(p), K) - z, scaled(to_nt<NT>(q), K) - z));
+            });
+            if (si == CGAL::ZERO) { zero = true; continue; }
+            if (first == CGAL::ZERO) first = si;
+            else if (si != first) miss = true;
+          }
+          if (miss) continue;
+          if (zero) { degenerate = true; break; }
+          odd = !odd;
+        }
+        if (!degenerate) return odd ? 1 : 0;
+      }
+      return -1; // not reached for a point off the surface (a generic ray exists)
+    };
+    for (Index v : m_vertices[b]) {
+      const int r = classify({pt(v), pt(v), pt(v)}, 1);
+      if (r >= 0) return r == 1;
+    }
+    for (Index t : m_triangles[b]) {
+      const auto& tri = m.triangles[t];
+      const int r = classify({pt(tri[0]), pt(tri[1]), pt(tri[2])}, 3);
+      if (r >= 0) return r == 1;
+    }
+    return true; // b's surface lies on a's: the same shell (the crossing test allowed it)
+  }
+
+  const Mesh_data& m;
+  const std::string& name;
+  std::vector<std::vector<Index>> m_triangles, m_vertices; // of each component
+};
+
+/// Convexity of interior edges: the far vertex of f[1] is not above the plane of f[0].
+inline void mark_convex_edges(Mesh_data& m)
+{
+  for (Index i = 0; i < m.edges.size(); ++i) {
+    Mesh_data::Edge& e = m.edges[i];
+    if (e.f[1] == no_index) continue;
+    const Index far = m.opposite_vertex(e.f[1], i);
+    const Index t0 = e.f[0];
+    e.convex = filtered_sign([&](auto nt) {
+                 using NT = decltype(nt);
+                 return dot(m.point<NT>(far) - m.point<NT>(m.triangles[t0][0]),
+                            m.triangle_normal<NT>(t0));
+               }) != CGAL::POSITIVE;
+  }
+}
+
 /// Exact double value of a kernel coordinate, or an Invalid_input error.
 template <class FT>
 double exact_double(const FT& x, const std::string& where)
@@ -170,11 +493,30 @@ double exact_double(const FT& x, const std::string& where)
   return d;
 }
 
+/// Without the solid checks: the sign of the closed components' total volume.
+inline void check_total_orientation(const Mesh_data& m, const std::string& name)
+{
+  const bool any_closed = std::any_of(m.components.begin(), m.components.end(),
+                                      [](const Mesh_data::Component& c) { return c.closed; });
+  const CGAL::Sign volume = filtered_sign([&](auto nt) {
+    using NT = decltype(nt);
+    NT sum(0);
+    for (Index t = 0; t < m.triangles.size(); ++t)
+      if (m.triangle_is_closed(t)) sum = sum + dot(m.point<NT>(m.triangles[t][0]), m.triangle_normal<NT>(t));
+    return sum;
+  });
+  if (any_closed && volume == CGAL::NEGATIVE)
+    throw Invalid_input(name + " is oriented inward (negative volume); reverse its face "
+                        "orientation, e.g. with PMP::reverse_face_orientations");
+}
+
 /// Copies and checks `pm`. `name` ("P" or "Q") prefixes the error messages. With
-/// `as_surface`, closed components count as surfaces too (no volume).
+/// `as_surface`, closed components count as surfaces too (no volume). With `check_solids`,
+/// closed components must not cross themselves or each other, and each must be oriented
+/// as its nesting asks (see Solid_checker); without, only the total volume's sign is checked.
 template <class PolygonMesh, class VertexPointMap>
 Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate, bool as_surface,
-                         const std::string& name, Mesh_descriptors<PolygonMesh>& desc)
+                         const std::string& name, Mesh_descriptors<PolygonMesh>& desc, bool check_solids = true)
 {
   using GT = boost::graph_traits<PolygonMesh>;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -257,34 +599,19 @@ Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
   build_stars_and_components(m, as_surface);
 
   // Closed components must bound their volume with outward normals (CGAL's convention):
-  // the sign of 6 x their total volume, sum of a . ((b - a) x (c - a)), decided exactly.
-  const bool any_closed = std::any_of(m.components.begin(), m.components.end(),
-                                      [](const Mesh_data::Component& c) { return c.closed; });
-  const CGAL::Sign volume = filtered_sign([&](auto nt) {
-    using NT = decltype(nt);
-    NT sum(0);
-    for (Index t = 0; t < m.triangles.size(); ++t)
-      if (m.triangle_is_closed(t)) sum = sum + dot(m.point<NT>(m.triangles[t][0]), m.triangle_normal<NT>(t));
-    return sum;
-  });
-  if (any_closed && volume == CGAL::NEGATIVE)
-    throw Invalid_input(name + " is oriented inward (negative volume); reverse its face "
-                        "orientation, e.g. with PMP::reverse_face_orientations");
-
-  // Convexity of interior edges: the far vertex of f[1] is not above the plane of f[0].
-  for (Index i = 0; i < m.edges.size(); ++i) {
-    Mesh_data::Edge& e = m.edges[i];
-    if (e.f[1] == no_index) continue;
-    const Index far = m.opposite_vertex(e.f[1], i);
-    const Index t0 = e.f[0];
-    e.convex = filtered_sign([&](auto nt) {
-                 using NT = decltype(nt);
-                 return dot(m.point<NT>(far) - m.point<NT>(m.triangles[t0][0]),
-                            m.triangle_normal<NT>(t0));
-               }) != CGAL::POSITIVE;
+  // the sign of 6 x their volume, sum of a . ((b - a) x (c - a)), decided exactly, for each
+  // (voids inward) after the crossing tests, or else for all together.
+  if (check_solids) {
+    const Solid_checker checker(m, name);
+    checker.check_crossings();
+    checker.check_orientations();
+  } else {
+    check_total_orientation(m, name);
   }
+  mark_convex_edges(m);
   return m;
 }
+
 
 /// A polyline as a mesh without triangles (a sweep path): vertices and edges only.
 template <class PointRange>

@@ -164,9 +164,41 @@ inline void facet_directions(const Mesh_data& M, Direction::Kind kind, Index t, 
 /// The kept feature pairs. Without the normal filter every feature pair is kept; pairs the
 /// filter would have dropped get the facet directions around their features. The tests run
 /// in parallel if asked (chunks of facets and edges); the result is sorted, hence the same.
+/// Without the normal filter, throws Too_many_feature_pairs before allocating them if the
+/// (pair, direction) records to store would be more than `max_records`.
 inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_data& Q, bool use_normal_filter,
-                                               bool parallel = false)
+                                               bool parallel = false,
+                                               std::size_t max_records = std::size_t(-1))
 {
+  if (!use_normal_filter) {
+    // Each pair (a, b) stores the facet directions around a and those around b (at most).
+    auto count = [](const Mesh_data& M, std::size_t& features, std::size_t& directions) {
+      auto around_triangle = [&](Index t) { return M.triangle_is_closed(t) ? 1 : 2; };
+      features = directions = 0;
+      for (Index v = 0; v < M.number_of_vertices(); ++v) {
+        if (M.vertex_is_isolated(v)) continue;
+        ++features;
+        for (Index i = M.vertex_triangle_offsets[v]; i < M.vertex_triangle_offsets[v + 1]; ++i)
+          directions += around_triangle(M.vertex_triangles[i]);
+      }
+      for (const auto& e : M.edges) {
+        ++features;
+        for (Index t : e.f) if (t != no_index) directions += around_triangle(t);
+      }
+      for (Index t = 0; t < M.number_of_triangles(); ++t) { ++features; directions += around_triangle(t); }
+    };
+    std::size_t fp, dp, fq, dq;
+    count(P, fp, dp);
+    count(Q, fq, dq);
+    const long double records = (long double)(fq) * dp + (long double)(fp) * dq; // no overflow
+    if (records > (long double)(max_records)) {
+      const std::size_t n = records >= (long double)(std::size_t(-1)) ? std::size_t(-1) : std::size_t(records);
+      throw Too_many_feature_pairs(n, max_records,
+                                "without the normal filter, the " + std::to_string(fp) + " x " + std::to_string(fq) +
+                                  " feature pairs need up to " + std::to_string(n) +
+                                  " (pair, direction) records, more than the limit of " + std::to_string(max_records));
+    }
+  }
   // Kept (pair, direction) records, per chunk of the loops below; sorted and merged at the end.
   using Kept = std::pair<Pair_key, Direction>;
   auto keep_closure = [&](std::vector<Kept>& kept, Feature fp, Feature fq, const Direction& d) {

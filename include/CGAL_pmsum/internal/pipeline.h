@@ -46,7 +46,6 @@ inline double seconds_since(Clock::time_point t)
 /// The covering distance precondition of every entry point: d > 0 and finite.
 inline void check_covering_distance(double d)
 {
-  CGAL_precondition_msg(d > 0 && std::isfinite(d), "d must be positive and finite");
   if (!(d > 0) || !std::isfinite(d))
     throw Invalid_input("d must be positive and finite (got " + std::to_string(d) + ")");
 }
@@ -90,7 +89,7 @@ public:
     m_scale = largest_coordinate(mp) + largest_coordinate(mq);
     m_seconds_trees = seconds_since(start);
     start = Clock::now();
-    m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel);
+    m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel, o.max_candidates);
     m_seconds_normal_filter = seconds_since(start);
   }
 

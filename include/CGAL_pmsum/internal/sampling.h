@@ -95,7 +95,7 @@ public:
       double n = (std::max)(1., std::ceil(length * (1 + 1e-9) / radius));
       n = multiple_of * std::ceil(n / multiple_of);
       if (!(n <= double(max_denominator)))
-        throw Invalid_input("d is too small for " + name + ": a feature would need more than " +
+        throw Covering_distance_too_small("d is too small for " + name + ": a feature would need more than " +
                             std::to_string(max_denominator) + " subdivisions");
       return std::int32_t(n);
     };

@@ -1,0 +1,449 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 CGAL_pmsum contributors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Hostile-input corpus of the pmsum command-line tool.
+
+Generates malformed inputs for every reader (OFF, OBJ, PLY ASCII and binary, STL ASCII and
+binary) and hostile option values, each with its expected exit code, runs `pmsum sum` on each
+and fails on any: wrong exit code or message class, crash (killed by a signal or exit >= 128),
+hang (> 30 s), peak RSS over 2 GiB (address space capped at 4 GiB), output or temporary file
+left behind after a failure, input file changed on disk.
+
+    make_corpus.py PMSUM [--keep DIR] [--list]
+"""
+
+import hashlib
+import os
+import re
+import resource
+import signal
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+TIMEOUT = 30
+RSS_LIMIT_KB = 2 * 1024 * 1024
+AS_LIMIT = 4 << 30
+
+# message class of each exit code (first line of stderr that is not a note)
+CLASSES = {
+    0: re.compile(r"points written"),
+    1: re.compile(r"^pmsum: error: "),
+    2: re.compile(r"^pmsum: .*\(see pmsum "),
+    3: re.compile(r"^pmsum: refused"),
+}
+
+# ----- valid models ----------------------------------------------------------------------
+TET = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+TET_F = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+CUBE = [(i & 1, (i >> 1) & 1, (i >> 2) & 1) for i in range(8)]
+CUBE_F = []
+for a, b, c, d in [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]:
+    CUBE_F += [(a, b, c), (a, c, d)]
+
+
+def num(x):
+    return repr(float(x)) if not isinstance(x, str) else x
+
+
+def off(points, faces, header=None, counts=None, tail=""):
+    counts = counts if counts is not None else "%d %d 0" % (len(points), len(faces))
+    s = (header if header is not None else "OFF") + "\n" + counts + "\n"
+    s += "".join(" ".join(num(c) for c in p) + "\n" for p in points)
+    s += "".join(" ".join(str(x) for x in [len(f)] + list(f)) + "\n" for f in faces)
+    return s + tail
+
+
+def obj(points, faces, base=1):
+    s = "".join("v " + " ".join(num(c) for c in p) + "\n" for p in points)
+    return s + "".join("f " + " ".join(str(i + base) if isinstance(i, int) else i for i in f) + "\n" for f in faces)
+
+
+def ply_ascii(points, faces, count_type="uchar", index_type="int", nv=None, nf=None, extra_header="", tail=""):
+    h = "ply\nformat ascii 1.0\n%selement vertex %s\nproperty float x\nproperty float y\nproperty float z\n" \
+        "element face %s\nproperty list %s %s vertex_indices\nend_header\n" % (
+            extra_header, len(points) if nv is None else nv, len(faces) if nf is None else nf, count_type, index_type)
+    s = "".join(" ".join(num(c) for c in p) + "\n" for p in points)
+    s += "".join(" ".join(str(x) for x in [len(f)] + list(f)) + "\n" for f in faces)
+    return (h + s + tail).encode()
+
+
+def ply_binary(points, faces, endian="<", count_type="uchar", index_type="int", nv=None, nf=None, tail=b"",
+               counts=None, coord_type="float"):
+    fmt = "binary_little_endian" if endian == "<" else "binary_big_endian"
+    h = ("ply\nformat %s 1.0\nelement vertex %s\nproperty %s x\nproperty %s y\nproperty %s z\n"
+         "element face %s\nproperty list %s %s vertex_indices\nend_header\n" % (
+             fmt, len(points) if nv is None else nv, coord_type, coord_type, coord_type,
+             len(faces) if nf is None else nf, count_type, index_type)).encode()
+    ct = {"uchar": "B", "uint": "I", "int": "i", "ushort": "H"}[count_type]
+    it = {"int": "i", "uint": "I", "uchar": "B", "short": "h"}[index_type]
+    cf = {"float": "f", "double": "d"}[coord_type]
+    b = b"".join(struct.pack(endian + "3" + cf, *p) for p in points)
+    for k, f in enumerate(faces):
+        n = len(f) if counts is None or counts[k] is None else counts[k]
+        b += struct.pack(endian + ct, n) + struct.pack(endian + "%d" % len(f) + it, *f)
+    return h + b + tail
+
+
+def stl_binary(points, faces, declared=None, tail=b"", header=b"binary"):
+    body = b""
+    for f in faces:
+        body += struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *points[i]) for i in f) + b"\0\0"
+    n = len(faces) if declared is None else declared
+    return header.ljust(80, b" ")[:80] + struct.pack("<I", n) + body + tail
+
+
+def stl_ascii(points, faces, name="cube", end=True):
+    s = "solid %s\n" % name
+    for f in faces:
+        s += " facet normal 0 0 0\n  outer loop\n"
+        s += "".join("   vertex %s %s %s\n" % tuple(num(c) for c in points[i]) for i in f)
+        s += "  endloop\n endfacet\n"
+    return s + ("endsolid %s\n" % name if end else "")
+
+
+def boxes(parts):
+    P, F = [], []
+    for lo, hi, inward in parts:
+        o = len(P)
+        P += [(hi[0] if i & 1 else lo[0], hi[1] if i & 2 else lo[1], hi[2] if i & 4 else lo[2]) for i in range(8)]
+        for a, b, c in CUBE_F:
+            F.append((o + a, o + c, o + b) if inward else (o + a, o + b, o + c))
+    return P, F
+
+
+# ----- the corpus ------------------------------------------------------------------------
+def corpus():
+    """(name, extension, content as str or bytes, expected exit code, extra arguments)."""
+    C = []
+
+    def add(name, ext, content, code, args=()):
+        C.append((name, ext, content, code, list(args)))
+
+    # OFF: header
+    add("off_empty", "off", "", 1)
+    add("off_only_comments", "off", "# nothing\n# here\n", 1)
+    add("off_no_keyword", "off", "8 12 0\n" + off(CUBE, CUBE_F).split("\n", 2)[2], 1)
+    add("off_wrong_keyword", "off", off(CUBE, CUBE_F, header="OFX"), 1)
+    add("off_lowercase", "off", off(CUBE, CUBE_F, header="off"), 1)
+    add("off_4off", "off", off(CUBE, CUBE_F, header="4OFF"), 1)
+    add("off_noff_dim", "off", off(CUBE, CUBE_F, header="nOFF"), 1)
+    add("off_binary", "off", "OFF BINARY\n" + "\0" * 40, 1)
+    add("off_counts_missing", "off", "OFF\n", 1)
+    add("off_counts_one", "off", "OFF\n8\n", 1)
+    add("off_counts_negative_v", "off", off(CUBE, CUBE_F, counts="-8 12 0"), 1)
+    add("off_counts_negative_f", "off", off(CUBE, CUBE_F, counts="8 -12 0"), 1)
+    add("off_counts_text", "off", off(CUBE, CUBE_F, counts="eight twelve 0"), 1)
+    add("off_counts_float", "off", off(CUBE, CUBE_F, counts="8.0 12 0"), 1)
+    add("off_counts_hex", "off", off(CUBE, CUBE_F, counts="0x8 12 0"), 1)
+    add("off_counts_edges_text", "off", off(CUBE, CUBE_F, counts="8 12 x"), 1)
+    for nv, nf in [(4e8, 12), (8, 4e8), (2**31, 12), (8, 2**32), (2**63, 1), (10**19, 1), (10**25, 1), (4e8, 4e8)]:
+        add("off_counts_huge_%g_%g" % (nv, nf), "off", off(CUBE, CUBE_F, counts="%d %d 0" % (nv, nf)), 1)
+    add("off_counts_more_vertices", "off", off(CUBE, CUBE_F, counts="9 12 0"), 1)
+    add("off_counts_fewer_vertices", "off", off(CUBE, CUBE_F, counts="7 12 0"), 1)
+    add("off_counts_more_faces", "off", off(CUBE, CUBE_F, counts="8 13 0"), 1)
+    add("off_counts_fewer_faces", "off", off(CUBE, CUBE_F, counts="8 4 0"), 1)
+    add("off_counts_zero_faces", "off", off(CUBE, [], counts="8 0 0"), 1)
+    add("off_counts_same_line", "off", "OFF 8 12 0\n" + off(CUBE, CUBE_F).split("\n", 2)[2], 0)
+    add("off_crlf", "off", off(CUBE, CUBE_F).replace("\n", "\r\n"), 0)
+    add("off_comments_everywhere", "off", off(CUBE, CUBE_F).replace("\n", " # c\n"), 0)
+    add("off_trailing_comment", "off", off(CUBE, CUBE_F, tail="# end\n\n\n"), 0)
+    add("off_trailing_data", "off", off(CUBE, CUBE_F, tail="3 0 1 2\n"), 1)
+    add("off_trailing_garbage", "off", off(CUBE, CUBE_F, tail="garbage\n"), 1)
+    add("off_trailing_nul", "off", off(CUBE, CUBE_F, tail="\0\0\0\n"), 1)
+    add("off_coff_colors", "off", off([p + (0.5, 0.5, 0.5, 1) for p in CUBE], CUBE_F, header="COFF"), 0)
+    add("off_face_colors", "off", off(CUBE, CUBE_F).replace("\n3 ", "\n3 ").rstrip("\n").replace(
+        "\n3 4 5 7", "\n3 4 5 7 255 0 0") + "\n", 0)
+    # OFF: vertices
+    bad_vertices = {
+        "two_coords": "0 0", "text": "a b c", "nan": "nan 0 0", "inf": "inf 0 0", "minus_inf": "0 -inf 0",
+        "overflow": "1e400 0 0", "hexfloat": "0x1p-3 0 0", "empty_token": "0 0 ,", "comma": "0,0,0",
+        "denormal": "4.9e-324 0 0", "huge": "1e308 1e308 1e308",
+    }
+    for k, v in bad_vertices.items():
+        lines = off(CUBE, CUBE_F).split("\n")
+        lines[2] = v
+        code = {"hexfloat": 0, "denormal": 0, "huge": 3}.get(k, 1)
+        add("off_vertex_" + k, "off", "\n".join(lines), code)
+    # OFF: faces
+    def cube_with_face(face_line, k=5):
+        lines = off(CUBE, CUBE_F).split("\n")
+        lines[2 + 8 + k] = face_line
+        return "\n".join(lines)
+    for k, line in {
+        "n0": "0", "n1": "1 0", "n2": "2 0 1", "n_huge": "2000000000 0 1 2", "n_2e19": "20000000000000000000 0 1 2",
+        "n_negative": "-3 0 1 2", "n_text": "x 0 1 2", "n_float": "3.0 0 1 2", "n_short": "4 0 1 2",
+        "index_8": "3 0 1 8", "index_big": "3 0 1 4294967296", "index_2e19": "3 0 1 99999999999999999999",
+        "index_negative": "3 0 1 -1", "index_float": "3 0 1 2.5", "index_text": "3 0 1 two",
+        "repeated": "3 0 0 1", "all_same": "3 1 1 1", "empty": "",
+    }.items():
+        add("off_face_" + k, "off", cube_with_face(line), 1)
+    add("off_face_quad_ok", "off", off(CUBE, [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2),
+                                             (1, 3, 7, 5)]), 0)
+    # a repeated vertex closing a polygon, a duplicated face: not a mesh, repaired (CGAL's PMP)
+    add("off_face_pentagon_repeat", "off", off(CUBE, [(0, 2, 3, 1, 0)] + CUBE_F[2:]), 0)
+    add("off_45_bytes_2e9", "off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", 1)
+    add("off_header_4e8_faces", "off", "OFF\n3 400000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1)
+    add("off_truncated_vertices", "off", "OFF\n8 12 0\n0 0 0\n1 0 0\n", 1)
+    add("off_truncated_faces", "off", off(CUBE, CUBE_F[:5], counts="8 12 0"), 1)
+    add("off_nul_bytes", "off", "OFF\n\0\0\0\0\n", 1)
+    add("off_random_bytes", "off", bytes(range(256)) * 4, 1)
+    add("off_long_line", "off", "OFF\n" + "1 " * 500000 + "\n", 1)
+    # OFF: geometry
+    add("off_degenerate_triangle", "off", off(TET + [(2, 0, 0)], TET_F + [(0, 1, 4)]), 1)
+    add("off_all_collinear", "off", off([(0, 0, 0), (1, 0, 0), (2, 0, 0)], [(0, 1, 2)]), 1)
+    add("off_open_ok", "off", off(CUBE, CUBE_F[2:]), 0)
+    add("off_inward_ok", "off", off(CUBE, [(a, c, b) for a, b, c in CUBE_F]), 0)
+    add("off_duplicate_face", "off", off(CUBE, CUBE_F + [CUBE_F[0]]), 0)
+    add("off_opposite_face", "off", off(CUBE, CUBE_F + [(CUBE_F[0][0], CUBE_F[0][2], CUBE_F[0][1])]), 0)
+    add("off_overlapping_cubes", "off", off(*boxes([((0, 0, 0), (2, 2, 2), 0), ((1, 1, 1), (3, 3, 3), 0)])), 1)
+    add("off_nested_void_ok", "off", off(*boxes([((0, 0, 0), (4, 4, 4), 0), ((1, 1, 1), (3, 3, 3), 1)])), 0)
+    add("off_touching_ok", "off", off(*boxes([((0, 0, 0), (1, 1, 1), 0), ((1, 0, 0), (2, 1, 1), 0)])), 0)
+    add("off_edge_touching_ok", "off", off(*boxes([((0, 0, 0), (1, 1, 1), 0), ((1, 1, 0), (2, 2, 1), 0)])), 0)
+    add("off_same_cube_twice", "off", off(*boxes([((0, 0, 0), (1, 1, 1), 0), ((0, 0, 0), (1, 1, 1), 0)])), 1)
+    si = list(CUBE)
+    si[7] = (0.25, 0.5, -1)
+    add("off_self_intersecting", "off", off(si, CUBE_F), 1)
+    add("off_isolated_vertex_ok", "off", off(CUBE + [(5, 5, 5)], CUBE_F), 0)
+    add("off_not_double", "off", off([(0.1, 0.2, 0.3)] + CUBE[1:], CUBE_F), 0)
+
+    # OBJ
+    add("obj_ok", "obj", obj(CUBE, CUBE_F), 0)
+    add("obj_empty", "obj", "", 1)
+    add("obj_no_faces", "obj", "".join("v %d %d %d\n" % p for p in CUBE), 1)
+    add("obj_index_zero", "obj", obj(CUBE, CUBE_F, base=0), 1)
+    add("obj_index_high", "obj", obj(CUBE, CUBE_F[:-1] + [(0, 1, 8)]), 1)
+    add("obj_index_huge", "obj", obj(CUBE, CUBE_F[:-1] + [(0, 1, "4294967297")]), 1)
+    add("obj_index_negative_ok", "obj", obj(CUBE, [tuple(str(i - 8) for i in f) for f in CUBE_F], base=0), 0)
+    add("obj_index_negative_far", "obj", obj(CUBE, CUBE_F[:-1] + [(0, 1, "-100")]), 1)
+    add("obj_two_vertices", "obj", obj(CUBE, CUBE_F[:-1] + [(0, 1)]), 1)
+    add("obj_repeated", "obj", obj(CUBE, CUBE_F[:-1] + [(0, 1, 1)]), 1)
+    add("obj_slashes_ok", "obj", obj(CUBE, [tuple("%d/%d/%d" % (i + 1, 1, 1) for i in f) for f in CUBE_F])
+        + "vt 0 0\nvn 0 0 1\n", 0)
+    add("obj_vertex_two_coords", "obj", "v 0 0\n" + obj(CUBE[1:], CUBE_F), 1)
+    add("obj_vertex_nan", "obj", "v nan 0 0\n" + obj(CUBE[1:], [tuple(i + 1 for i in f) for f in CUBE_F]), 1)
+    add("obj_vertex_text", "obj", "v a b c\n" + obj(CUBE, CUBE_F), 1)
+    add("obj_face_text", "obj", obj(CUBE, CUBE_F) + "f a b c\n", 1)
+    add("obj_random_bytes", "obj", bytes(range(256)) * 4, 1)
+    add("obj_overlapping", "obj", obj(*boxes([((0, 0, 0), (2, 2, 2), 0), ((1, 1, 1), (3, 3, 3), 0)])), 1)
+
+    # PLY ASCII
+    add("plya_ok", "ply", ply_ascii(CUBE, CUBE_F), 0)
+    add("plya_no_magic", "ply", ply_ascii(CUBE, CUBE_F)[4:], 1)
+    add("plya_no_end_header", "ply", ply_ascii(CUBE, CUBE_F).replace(b"end_header", b"end_headr"), 1)
+    add("plya_unknown_format", "ply", ply_ascii(CUBE, CUBE_F).replace(b"ascii", b"utf8"), 1)
+    add("plya_unknown_type", "ply", ply_ascii(CUBE, CUBE_F).replace(b"property float x", b"property quad x"), 1)
+    add("plya_no_x", "ply", ply_ascii(CUBE, CUBE_F).replace(b"property float x", b"property float w"), 1)
+    add("plya_no_indices", "ply", ply_ascii(CUBE, CUBE_F).replace(b"vertex_indices", b"corners"), 1)
+    add("plya_list_float_count", "ply", ply_ascii(CUBE, CUBE_F, count_type="float"), 1)
+    add("plya_count_negative", "ply", ply_ascii(CUBE, CUBE_F, nf="-12"), 1)
+    add("plya_count_text", "ply", ply_ascii(CUBE, CUBE_F, nv="eight"), 1)
+    for nv, nf in [(8, 4e8), (4e8, 12), (8, 2**40), (10**19, 12), (10**30, 12)]:
+        add("plya_count_huge_%g_%g" % (nv, nf), "ply", ply_ascii(CUBE, CUBE_F, nv="%d" % nv, nf="%d" % nf), 1)
+    add("plya_more_faces", "ply", ply_ascii(CUBE, CUBE_F, nf=13), 1)
+    add("plya_fewer_faces", "ply", ply_ascii(CUBE, CUBE_F, nf=4), 1)
+    add("plya_index_high", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1, 8)]), 1)
+    add("plya_index_negative", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1, -1)]), 1)
+    add("plya_index_float", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1, 2.5)]), 1)
+    add("plya_list_huge", "ply", ply_ascii(CUBE, CUBE_F).replace(b"\n3 1 3 7", b"\n2000000000 1 3 7"), 1)
+    add("plya_list_two", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1)]), 1)
+    add("plya_vertex_text", "ply", ply_ascii(CUBE, CUBE_F).replace(b"end_header\n0.0", b"end_header\nzero"), 1)
+    add("plya_vertex_nan", "ply", ply_ascii(CUBE, CUBE_F).replace(b"end_header\n0.0", b"end_header\nnan"), 1)
+    add("plya_comments_ok", "ply", ply_ascii(CUBE, CUBE_F, extra_header="comment hello\nobj_info x\n"), 0)
+    add("plya_extra_element_ok", "ply", ply_ascii(CUBE, CUBE_F).replace(
+        b"end_header\n", b"element edge 1\nproperty int a\nproperty int b\nend_header\n") + b"0 1\n", 0)
+    add("plya_trailing_data", "ply", ply_ascii(CUBE, CUBE_F, tail="1 2 3\n"), 1)
+
+    # PLY binary
+    for e, name in (("<", "le"), (">", "be")):
+        add("plyb_%s_ok" % name, "ply", ply_binary(CUBE, CUBE_F, endian=e), 0)
+        add("plyb_%s_index_high" % name, "ply", ply_binary(CUBE, CUBE_F[:-1] + [(0, 1, 1000)], endian=e), 1)
+        add("plyb_%s_index_negative" % name, "ply", ply_binary(CUBE, CUBE_F[:-1] + [(0, 1, -7)], endian=e), 1)
+        add("plyb_%s_truncated" % name, "ply", ply_binary(CUBE, CUBE_F, endian=e)[:-7], 1)
+    add("plyb_double_ok", "ply", ply_binary(CUBE, CUBE_F, coord_type="double"), 0)
+    add("plyb_uint_count_ok", "ply", ply_binary(CUBE, CUBE_F, count_type="uint"), 0)
+    add("plyb_uint_index_ok", "ply", ply_binary(CUBE, CUBE_F, index_type="uint"), 0)
+    add("plyb_uchar_index_ok", "ply", ply_binary(CUBE, CUBE_F, index_type="uchar"), 0)
+    add("plyb_list_2e9", "ply", ply_binary(CUBE, CUBE_F, count_type="uint", counts=[None] * 11 + [2000000000]), 1)
+    add("plyb_list_4e9", "ply", ply_binary(CUBE, CUBE_F, count_type="uint", counts=[None] * 11 + [4000000000]), 1)
+    add("plyb_list_negative", "ply", ply_binary(CUBE, CUBE_F, count_type="int", counts=[None] * 11 + [-3]), 1)
+    add("plyb_list_zero", "ply", ply_binary(CUBE, CUBE_F[:-1] + [()]), 1)
+    add("plyb_list_255", "ply", ply_binary(CUBE, CUBE_F, counts=[None] * 11 + [255]), 1)
+    add("plyb_list_short", "ply", ply_binary(CUBE, CUBE_F, counts=[None] * 11 + [2]), 1)
+    add("plyb_count_4e8", "ply", ply_binary(CUBE, CUBE_F, nf=400000000), 1)
+    add("plyb_count_2e19", "ply", ply_binary(CUBE, CUBE_F, nv="20000000000000000000"), 1)
+    add("plyb_count_more", "ply", ply_binary(CUBE, CUBE_F, nf=13), 1)
+    add("plyb_count_fewer", "ply", ply_binary(CUBE, CUBE_F, nf=11), 1)
+    add("plyb_trailing", "ply", ply_binary(CUBE, CUBE_F, tail=b"\0" * 13), 1)
+    add("plyb_nan", "ply", ply_binary([(float("nan"), 0, 0)] + CUBE[1:], CUBE_F), 1)
+    add("plyb_inf", "ply", ply_binary([(float("inf"), 0, 0)] + CUBE[1:], CUBE_F), 1)
+    add("plyb_header_only", "ply", ply_binary(CUBE, CUBE_F).split(b"end_header\n")[0] + b"end_header\n", 1)
+    add("plyb_no_newline_after_header", "ply", ply_binary(CUBE, CUBE_F).split(b"end_header\n")[0] + b"end_header", 1)
+    add("plyb_overlapping", "ply", ply_binary(*boxes([((0, 0, 0), (2, 2, 2), 0), ((1, 1, 1), (3, 3, 3), 0)])), 1)
+
+    # STL binary
+    add("stlb_ok", "stl", stl_binary(CUBE, CUBE_F), 0)
+    add("stlb_solid_header_ok", "stl", stl_binary(CUBE, CUBE_F, header=b"solid but binary"), 0)
+    add("stlb_space_header_ok", "stl", stl_binary(CUBE, CUBE_F, header=b"   "), 0)
+    for k, d in {"fewer": 3, "more": 13, "zero": 0, "huge": 10**9, "max": 2**32 - 1}.items():
+        add("stlb_declared_" + k, "stl", stl_binary(CUBE, CUBE_F, declared=d), 1)
+    add("stlb_trailing", "stl", stl_binary(CUBE, CUBE_F, tail=b"x"), 1)
+    add("stlb_truncated", "stl", stl_binary(CUBE, CUBE_F)[:-1], 1)
+    add("stlb_short", "stl", b"\0" * 83, 1)
+    add("stlb_header_only", "stl", stl_binary(CUBE, []), 1)
+    add("stlb_nan", "stl", stl_binary([(float("nan"), 0, 0)] + CUBE[1:], CUBE_F), 1)
+    add("stlb_degenerate", "stl", stl_binary(CUBE, CUBE_F[:-1] + [(0, 1, 1)]), 1)
+    add("stlb_open_ok", "stl", stl_binary(CUBE, CUBE_F[2:]), 0)
+
+    # STL ASCII
+    add("stla_ok", "stl", stl_ascii(CUBE, CUBE_F), 0)
+    add("stla_no_endsolid", "stl", stl_ascii(CUBE, CUBE_F, end=False), 1)
+    add("stla_text_coordinate", "stl", stl_ascii(CUBE, CUBE_F).replace("vertex 0.0 0.0 0.0", "vertex a b c", 1), 1)
+    add("stla_two_coordinates", "stl", stl_ascii(CUBE, CUBE_F).replace("vertex 0.0 0.0 0.0", "vertex 0 0", 1), 1)
+    add("stla_nan", "stl", stl_ascii(CUBE, CUBE_F).replace("vertex 0.0 0.0 0.0", "vertex nan 0 0", 1), 1)
+    add("stla_missing_vertex", "stl", stl_ascii(CUBE, CUBE_F).replace("   vertex 0.0 0.0 0.0\n", "", 1), 1)
+    add("stla_empty_solid", "stl", "solid x\nendsolid x\n", 1)
+    add("stla_only_solid", "stl", "solid", 1)
+    add("stla_random_after_solid", "stl", b"solid " + bytes(range(256)) * 3, 1)
+
+    # Option values (on valid inputs written by the runner: cube.off, tet.off).
+    def opt(name, args, code):
+        C.append(("opt_" + name, None, None, code, args))
+    for d, code in [("0", 2), ("-1", 2), ("nan", 2), ("inf", 2), ("-inf", 2), ("1e-300", 3), ("1e-12", 3),
+                    ("1e308", 0), ("1e", 2), ("", 2), ("0x10", 0), ("1,5", 2), (" 1", 0), ("5e-324", 3)]:
+        opt("d_" + d.replace(" ", "_"), ["-d", d], code)
+    for t, code in [("0", 2), ("-1", 2), ("1.5", 2), ("abc", 2), ("1e9", 2), ("1", 0), ("1025", 2)]:
+        opt("threads_" + t, ["-d", "0.5", "--threads", t], code)
+    for s, code in [("0", 2), ("-1", 2), ("nan", 2), ("inf", 2), ("1e308", 3), ("1e-300", 0), ("1e300", 3)]:
+        opt("scale_q_" + s, ["-d", "0.5", "--scale-q", s], code)
+    for lv, code in [("0.4", 2), ("1,0.4", 2), ("abc", 2), ("", 2), ("2,,1", 2), ("0.6,0.8", 2), ("0.8,0.6", 0),
+                     ("nan", 2), ("inf,1", 2)]:
+        opt("levels_" + lv.replace(",", "_"), ["-d", "0.5", "--levels", lv], code)
+    opt("relative_tiny", ["-d", "1e-9", "--relative"], 3)
+    opt("relative_huge", ["-d", "1e9", "--relative"], 0)
+    opt("missing_d_value", ["-d"], 2)
+    opt("unknown_option", ["-d", "0.5", "--frobnicate"], 2)
+    opt("output_directory", ["-d", "0.5", "-o", "DIR/"], 2)
+    opt("output_missing_dir", ["-d", "0.5", "-o", "DIR/missing/out.ply"], 1)
+    opt("output_is_input", ["-d", "0.5", "-o", "INPUT"], 2)
+    opt("json_is_input", ["-d", "0.5", "--json", "INPUT"], 2)
+    opt("json_missing_dir", ["-d", "0.5", "--json", "DIR/missing/x.json"], 1)
+    opt("json_is_output", ["-d", "0.5", "--json", "DIR/out.xyz", "-o", "DIR/out.xyz"], 2)
+    opt("json_dev_null", ["-d", "0.5", "--json", "/dev/null"], 1)
+    opt("output_long_name", ["-d", "0.5", "-o", "DIR/" + "a" * 246 + ".xyz"], 0)
+    opt("output_too_long_name", ["-d", "0.5", "-o", "DIR/" + "a" * 300 + ".xyz"], 1)
+    return C
+
+
+def run(pmsum, args, cwd):
+    """(exit code or -signal, stdout, stderr, seconds, peak RSS in kB, timed out)."""
+    def limits():
+        resource.setrlimit(resource.RLIMIT_AS, (AS_LIMIT, AS_LIMIT))
+    start = time.monotonic()
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        p = subprocess.Popen([pmsum] + args, stdout=out, stderr=err, cwd=cwd, preexec_fn=limits)
+        timed_out = False
+        while True:
+            pid, status, usage = os.wait4(p.pid, os.WNOHANG)
+            if pid == p.pid:
+                break
+            if time.monotonic() - start > TIMEOUT:
+                p.kill()
+                timed_out = True
+                pid, status, usage = os.wait4(p.pid, 0)
+                break
+            time.sleep(0.01)
+        code = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        err.seek(0)
+        return code, out.read().decode(errors="replace"), err.read().decode(errors="replace"), \
+            time.monotonic() - start, usage.ru_maxrss, timed_out
+
+
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__)
+        return 2
+    pmsum = os.path.abspath(sys.argv[1])
+    cases = corpus()
+    if "--list" in sys.argv:
+        for name, ext, _, code, _ in cases:
+            print(code, name)
+        return 0
+    keep = sys.argv[sys.argv.index("--keep") + 1] if "--keep" in sys.argv else None
+    work = keep or tempfile.mkdtemp(prefix="pmsum-corpus-")
+    os.makedirs(work, exist_ok=True)
+    cube, tet = os.path.join(work, "cube.off"), os.path.join(work, "tet.off")
+    with open(cube, "w") as f:
+        f.write(off(CUBE, CUBE_F))
+    with open(tet, "w") as f:
+        f.write(off(TET, TET_F))
+    passed = failed = 0
+    for name, ext, content, code, extra in cases:
+        out_dir = os.path.join(work, "out_" + name)
+        os.makedirs(out_dir, exist_ok=True)
+        if ext is not None:
+            path = os.path.join(work, name + "." + ext)
+            with open(path, "wb") as f:
+                f.write(content if isinstance(content, bytes) else content.encode())
+            # the hostile file as P, and as Q when it is valid (both readers' paths)
+            args = ["sum", path, tet, "-d", "0.5", "-o", os.path.join(out_dir, "out.xyz")]
+        else:
+            path = cube
+            extra = [a.replace("DIR", out_dir).replace("INPUT", cube) for a in extra]
+            if "-o" not in extra:
+                extra += ["-o", os.path.join(out_dir, "out.xyz")]
+            if extra[:1] == ["-d"] and len(extra) == 1:
+                extra = ["-o", os.path.join(out_dir, "out.xyz"), "-d"]
+            args = ["sum", cube, tet] + extra
+        before = {p: digest(p) for p in (path, cube, tet)}
+        got, stdout, stderr, seconds, rss, timed_out = run(pmsum, args + ["--quiet"] * 0, work)
+        problems = []
+        if timed_out:
+            problems.append("hang (> %d s)" % TIMEOUT)
+        elif got < 0 or got >= 128:
+            problems.append("crash (exit %d)" % got)
+        elif got != code:
+            problems.append("exit %d, expected %d" % (got, code))
+        lines = [l for l in stderr.splitlines() if "note:" not in l]
+        if not timed_out and got in CLASSES and got == code:
+            if not lines or not CLASSES[got].search(lines[0]):
+                problems.append("message class: %r" % (lines[:1],))
+            elif got != 0 and len(lines) != 1:
+                problems.append("error is not one line: %r" % lines)
+        if rss > RSS_LIMIT_KB:
+            problems.append("peak RSS %d MiB" % (rss // 1024))
+        left = [f for f in os.listdir(out_dir) if got != 0 or f.startswith(".pmsum-")]
+        left += [f for f in os.listdir(work) if f.startswith(".pmsum-")]
+        if left:
+            problems.append("files left behind: %s" % left[:3])
+        for p, h in before.items():
+            if os.path.exists(p) and digest(p) != h:
+                problems.append("input changed: %s" % os.path.basename(p))
+        if problems:
+            failed += 1
+            print("FAILED %s: %s" % (name, "; ".join(problems)))
+            for l in stderr.splitlines()[-3:]:
+                print("    " + l[:200])
+        else:
+            passed += 1
+        for f in os.listdir(out_dir):
+            os.remove(os.path.join(out_dir, f))
+        os.rmdir(out_dir)
+    if not keep:
+        for f in os.listdir(work):
+            os.remove(os.path.join(work, f))
+        os.rmdir(work)
+    print("corpus: %d passed, %d failed" % (passed, failed))
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
