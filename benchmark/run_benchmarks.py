@@ -153,7 +153,7 @@ def bench_net(run):
         one = run.sum(pair, d, threads=1)
         full = run.sum(pair, d, ["--all-candidates"], threads=2)
         v = None if pair in NO_NEF or (pair, d) in GOAL_PAIRS else run.validate(pair, d)
-        m = None if pair in NO_NEF else manifold(run, pair)
+        m = None if pair in NO_NEF else manifold(run, pair, timeout=300)
         ours = net["seconds"]["total"]
         nef = v and v["seconds"]["nef"]
         ms = m and m.get("seconds")
@@ -335,7 +335,7 @@ def bench_threads(run):
     fig.savefig(os.path.join(RESULTS, "threads.png"))
 
 
-def manifold(run, pair):
+def manifold(run, pair, timeout=600):
     """Manifold's minkowskiSum on the pair: {"seconds", "surface_area", ...}, or None."""
     if not os.path.exists(os.path.join(NODE, "node_modules", "manifold-3d")):
         os.makedirs(NODE, exist_ok=True)
@@ -350,7 +350,7 @@ def manifold(run, pair):
     scale = args[args.index("--scale-q") + 1] if "--scale-q" in args else "1"
     try:
         out = subprocess.run(["node", script, run.path(ps), run.path(qs), scale], capture_output=True, text=True,
-                             timeout=600, check=True)
+                             timeout=timeout, check=True)
         return json.loads(out.stdout)
     except (subprocess.SubprocessError, ValueError):
         return None

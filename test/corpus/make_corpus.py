@@ -12,6 +12,7 @@ left behind after a failure, input file changed on disk.
     make_corpus.py PMSUM [--keep DIR] [--list]
 """
 
+import collections
 import hashlib
 import os
 import re
@@ -386,6 +387,7 @@ def main():
     with open(tet, "w") as f:
         f.write(off(TET, TET_F))
     passed = failed = 0
+    outcomes = collections.Counter()
     for name, ext, content, code, extra in cases:
         out_dir = os.path.join(work, "out_" + name)
         os.makedirs(out_dir, exist_ok=True)
@@ -405,6 +407,8 @@ def main():
             args = ["sum", cube, tet] + extra
         before = {p: digest(p) for p in (path, cube, tet)}
         got, stdout, stderr, seconds, rss, timed_out = run(pmsum, args + ["--quiet"] * 0, work)
+        outcomes[("hung" if timed_out else "crashed" if got < 0 or got >= 128 else
+                  "accepted" if got == 0 else "refused (exit %d)" % got)] += 1
         problems = []
         if timed_out:
             problems.append("hang (> %d s)" % TIMEOUT)
@@ -441,6 +445,7 @@ def main():
         for f in os.listdir(work):
             os.remove(os.path.join(work, f))
         os.rmdir(work)
+    print("outcomes: " + ", ".join("%s %d" % kv for kv in sorted(outcomes.items())))
     print("corpus: %d passed, %d failed" % (passed, failed))
     return 0 if failed == 0 else 1
 
