@@ -28,7 +28,10 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <cctype>
 #include <chrono>
+#include <iterator>
+#include <sstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -55,11 +58,15 @@ public:
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  /// Reads a reference saved with save().
+  /// Reads a reference saved with save(). Throws Invalid_input if the text is not a whole,
+  /// consistent Nef complex (CGAL's reader would build a broken one from a truncated file).
   explicit Nef_minkowski_sum_reference(std::istream& in)
   {
-    in >> m_nef;
-    if (!in && !in.eof()) throw Invalid_input("cannot read the exact Nef boundary");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    check_nef3_layout(text);
+    std::istringstream parsed(text);
+    parsed >> m_nef;
+    if (!parsed || !m_nef.is_valid()) throw Invalid_input("the exact Nef boundary is not a valid Nef complex");
   }
 
   void save(std::ostream& out) const
@@ -128,8 +135,50 @@ public:
   }
 
 private:
-  /// Union of the Nef polyhedra of the closed components of `pm` (components touching along
-  /// edges, as in non-manifold inputs split by CGAL's reader, are merged exactly).
+  /// The layout CGAL's writer gives (SNC_io_parser::print): header, seven section counts, one
+  /// line per item numbered from 0 in each section, end marker. CGAL's reader checks most
+  /// indices but stops silently at a short or mislabelled line, leaving items unset; and it
+  /// allocates every item from the counts first.
+  static void check_nef3_layout(const std::string& text)
+  {
+    auto fail = [](const std::string& why) { throw Invalid_input("not an exact Nef boundary (.nef3): " + why); };
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+      while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+      if (!line.empty()) lines.push_back(line);
+    }
+    if (lines.size() < 10 || lines[0] != "Selective Nef Complex") fail("no 'Selective Nef Complex' header");
+    if (lines[1] != "standard") fail("kernel type '" + lines[1] + "', expected 'standard'");
+    std::size_t line = 2, total = 0;
+    std::vector<std::size_t> counts;
+    for (const char* section : {"vertices", "halfedges", "facets", "volumes", "shalfedges", "shalfloops", "sfaces"}) {
+      std::istringstream l(lines[line]);
+      std::string name;
+      long long n = -1;
+      if (!(l >> name >> n) || name != section || n < 0 || !(l >> std::ws).eof())
+        fail("line " + std::to_string(line + 1) + ": expected '" + section + " COUNT'");
+      if (std::size_t(n) > lines.size()) fail(std::string("more ") + section + " than lines");
+      counts.push_back(std::size_t(n));
+      total += std::size_t(n);
+      ++line;
+    }
+    if (lines.size() != line + total + 1 || lines.back() != "/* end Selective Nef complex */")
+      fail("truncated, or items missing or in excess: " + std::to_string(lines.size()) + " lines for " +
+           std::to_string(total) + " items");
+    for (std::size_t n : counts)
+      for (std::size_t i = 0; i < n; ++i, ++line) {
+        std::istringstream l(lines[line]);
+        long long index = -1;
+        std::string brace;
+        if (!(l >> index >> brace) || index != static_cast<long long>(i) || brace != "{" ||
+            lines[line].find('}') == std::string::npos)
+          fail("line " + std::to_string(line + 1) + " is not item " + std::to_string(i) + " of its section");
+      }
+  }
+
+  /// The solid bounded by the closed components of `pm`, voids included (components touching
+  /// along edges or faces, as in non-manifold inputs split by CGAL's reader, are merged exactly).
   template <class Mesh>
   static Nef to_nef(const Mesh& pm, const std::string& name, bool negate)
   {
@@ -147,11 +196,18 @@ private:
     if (!CGAL::is_closed(m))
       throw Invalid_input(name + " has a border: the Nef reference needs closed meshes");
     if (negate) CGAL::Polygon_mesh_processing::reverse_face_orientations(m);
+    // The solid is the set of points inside an odd number of components (a void is a
+    // component inside another; the components do not cross): the symmetric difference of
+    // their interiors. Regularizing puts back the faces that components share back to back.
     std::vector<EMesh> parts;
     CGAL::Polygon_mesh_processing::split_connected_components(m, parts);
     Nef result;
-    for (const EMesh& part : parts) result += Nef(part);
-    return result;
+    for (EMesh& part : parts) {
+      if (!CGAL::Polygon_mesh_processing::is_outward_oriented(part))
+        CGAL::Polygon_mesh_processing::reverse_face_orientations(part);
+      result ^= Nef(part);
+    }
+    return result.regularization();
   }
 
   Nef m_nef;
