@@ -36,6 +36,7 @@ namespace Pmsum {
 /// polyhedron B satisfies ball(inradius) inside B inside ball(r): P + B lies between the
 /// offsets of P at distances inradius and r. Returns the inradius (a lower bound).
 /// \pre r > 0 and 0 < relative_error < 1
+/// Throws Too_large if the ball would need more than 2^22 faces (relative_error below about 1e-6).
 template <class PolygonMesh>
 double make_icosphere(double r, double relative_error, PolygonMesh& out)
 {
@@ -66,7 +67,11 @@ double make_icosphere(double r, double relative_error, PolygonMesh& out)
     }
     return m * (1 - 1e-12);
   };
+  const std::size_t max_faces = std::size_t(1) << 22;
   while (inradius() < (1 - relative_error) * r) {
+    if (4 * f.size() > max_faces)
+      throw Too_large("a ball within the relative error asked for would need more than " +
+                      std::to_string(max_faces) + " faces; allow a larger error");
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
     auto middle = [&](std::size_t a, std::size_t b) {
       const auto key = std::minmax(a, b);
@@ -115,6 +120,10 @@ OutputIterator point_erosion(const PolygonMesh& P, const StructuringMesh& B, dou
     typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type>::Kernel;
   using Point = typename K::Point_3;
   if (!CGAL::is_closed(P)) throw Invalid_input("point_erosion needs a closed mesh P");
+  { // P is a solid: check it as one (the sum below takes its surface as a surface)
+    internal::Mesh_descriptors<PolygonMesh> desc;
+    internal::make_mesh_data(P, get(CGAL::vertex_point, P), false, false, "P", desc);
+  }
   std::vector<Point> boundary;
   // Every boundary candidate: the net is taken after the part inside P is chosen (a net of
   // the whole boundary could cover a point inside P by one outside).
