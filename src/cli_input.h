@@ -33,8 +33,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -473,6 +475,110 @@ inline Polygon_soup read_soup(const std::string& path, const std::string& what)
   return s;
 }
 
+/// Splits the edges of a polygon soup shared by more than two polygons (solids that touch
+/// along an edge and share its vertices, or one solid pinched along an edge) the way the
+/// solids ask: around such an edge, each polygon that runs b -> a is joined to the next
+/// polygon counterclockwise about a -> b, which must run a -> b (the solid lies between
+/// them); then each end of such an edge gets one copy per fan of polygons joined around it. Without
+/// this, CGAL's soup repair joins the polygons at random and opens the solids into surfaces
+/// with borders, whose sum is that of surfaces. Returns the number of edges split; 0 (soup
+/// unchanged) when there is none, or when directions do not alternate around an edge (e.g.
+/// a component written twice): the checks of the input stage then say what is wrong.
+template <class Point>
+std::size_t split_non_manifold_edges(std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons)
+{
+  using Corner = std::pair<std::size_t, std::size_t>; // (polygon, position): the edge from it to the next
+  auto at = [&](const Corner& c, std::size_t shift) {
+    const auto& poly = polygons[c.first];
+    return poly[(c.second + shift) % poly.size()];
+  };
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, Corner>> edge_corners; // sorted by edge
+  for (std::size_t i = 0; i < polygons.size(); ++i)
+    for (std::size_t k = 0; k < polygons[i].size() && polygons[i].size() >= 3; ++k)
+      if (at({i, k}, 0) != at({i, k}, 1)) edge_corners.push_back({std::minmax(at({i, k}, 0), at({i, k}, 1)), {i, k}});
+  std::sort(edge_corners.begin(), edge_corners.end());
+  bool any = false;
+  for (std::size_t i = 2; i < edge_corners.size() && !any; ++i) any = edge_corners[i].first == edge_corners[i - 2].first;
+  if (!any) return 0;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<Corner>> on_edge;
+  for (const auto& [edge, corner] : edge_corners) on_edge[edge].push_back(corner);
+  std::map<Corner, Corner> twin;
+  std::set<std::size_t> pinched; // the ends of the split edges: only they get copies
+  std::size_t split = 0;
+  for (auto& [edge, corners] : on_edge) {
+    if (corners.size() <= 2) {
+      if (corners.size() == 2 && at(corners[0], 0) == at(corners[1], 1)) {
+        twin[corners[0]] = corners[1];
+        twin[corners[1]] = corners[0];
+      }
+      continue;
+    }
+    // angle of each polygon about the axis a -> b, from its vertex after the edge
+    const auto& a = points[edge.first];
+    const auto& b = points[edge.second];
+    const std::array<double, 3> t = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
+    const int m = std::abs(t[0]) < std::abs(t[1]) ? (std::abs(t[0]) < std::abs(t[2]) ? 0 : 2)
+                                                  : (std::abs(t[1]) < std::abs(t[2]) ? 1 : 2);
+    std::array<double, 3> u{0, 0, 0};
+    u[m] = 1; // any vector off the axis; only the projection matters
+    auto cross = [](const std::array<double, 3>& x, const std::array<double, 3>& y) {
+      return std::array<double, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+    };
+    const auto v = cross(t, u), w = cross(v, t); // (w, v, t): right-handed, w and v across the axis
+    std::vector<std::pair<double, Corner>> around;
+    for (const Corner& c : corners) {
+      const auto& p = points[at(c, 2)];
+      const std::array<double, 3> d = {p.x() - a.x(), p.y() - a.y(), p.z() - a.z()};
+      around.push_back({std::atan2(d[0] * v[0] + d[1] * v[1] + d[2] * v[2], d[0] * w[0] + d[1] * w[1] + d[2] * w[2]), c});
+    }
+    std::sort(around.begin(), around.end());
+    const std::size_t n = around.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Corner& c = around[i].second;
+      const Corner& next = around[(i + 1) % n].second;
+      const bool backward = at(c, 0) == edge.second; // runs b -> a: the solid is counterclockwise of it
+      if (backward == (at(next, 0) == edge.second)) return 0; // directions do not alternate
+      if (backward) {
+        twin[c] = next;
+        twin[next] = c;
+      }
+    }
+    ++split;
+    pinched.insert(edge.first);
+    pinched.insert(edge.second);
+  }
+  if (split == 0) return 0;
+  // fans: the corner at vertex x of polygon i follows, around x, the corner of x in the polygon
+  // across the edge that leaves x in polygon i
+  std::map<Corner, Corner> parent;
+  std::function<Corner(Corner)> find = [&](Corner c) {
+    auto it = parent.find(c);
+    if (it == parent.end() || it->second == c) return c;
+    return it->second = find(it->second);
+  };
+  for (const auto& [c, across] : twin) {
+    const Corner here = find(c), there = find({across.first, (across.second + 1) % polygons[across.first].size()});
+    if (here != there) parent[here] = there;
+  }
+  std::map<Corner, std::size_t> copy_of_fan;
+  std::vector<bool> used(points.size(), false);
+  auto new_polygons = polygons;
+  for (std::size_t i = 0; i < polygons.size(); ++i)
+    for (std::size_t k = 0; k < polygons[i].size(); ++k) {
+      const std::size_t x = polygons[i][k];
+      if (!pinched.count(x)) continue;
+      const auto [it, first] = copy_of_fan.emplace(find({i, k}), x);
+      if (first && used[x]) { // another fan already holds x: a copy
+        it->second = points.size();
+        points.push_back(points[x]);
+      }
+      used[x] = true;
+      new_polygons[i][k] = it->second;
+    }
+  polygons.swap(new_polygons);
+  return split;
+}
+
 /// Reads a mesh (OFF, OBJ, PLY, STL) through a checked polygon soup (read_soup). A valid
 /// mesh is built as it is; only a soup that is not one is repaired (CGAL's PMP: duplicated
 /// points merged, non-manifold edges and vertices split, orientation made consistent).
@@ -490,6 +596,9 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
   // Vertices of no face are ignored by every stage; CGAL 5.5's orient_to_bound_a_volume
   // crashes on them (segmentation fault in volume_connected_components).
   PMP::remove_isolated_points_in_polygon_soup(s.points, s.polygons);
+  if (const std::size_t split = split_non_manifold_edges(s.points, s.polygons); split > 0)
+    note(what + ": " + std::to_string(split) + " edges with more than two faces, split between the solids that meet there",
+         quiet);
   Mesh m;
   if (!PMP::is_polygon_soup_a_polygon_mesh(s.polygons)) {
     PMP::repair_polygon_soup(s.points, s.polygons);

@@ -108,6 +108,11 @@ OFF
 EOF
 "$pmsum" sum "$work/two.off" "$tet" -d 0.2 -o "$work/two.xyz" --quiet && ok || ko "non-manifold blocks"
 "$pmsum" sum "$data/open_cube.off" "$data/ellipsoid.off" -d 0.05 --relative -o "$work/open.xyz" --quiet && ok || ko "open cube + ellipsoid"
+# two solids touching along an edge and sharing its vertices (four faces on it): read as
+# solids (read as surfaces, the sum would have points inside it), exact against Nef
+"$pmsum" validate "$data/l_and_box_sharing_edge.off" "$tet" -d 0.1 > "$work/shared.txt" 2>&1
+if [ $? = 0 ] && grep -q "split between the solids" "$work/shared.txt" && grep -q "verdict           OK" "$work/shared.txt"
+then ok; else ko "solids sharing an edge's vertices"; cat "$work/shared.txt"; fi
 
 # --- other commands ----------------------------------------------------------------------
 "$pmsum" generate plates -o "$work/plates.off" && "$pmsum" generate cube-small -o "$work/small.off" && ok || ko "generate"
