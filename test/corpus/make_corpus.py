@@ -115,6 +115,16 @@ def boxes(parts):
     return P, F
 
 
+def shared(points, faces):
+    """The same mesh with equal points merged (parts that touch share their vertices there)."""
+    index, P = {}, []
+    for p in points:
+        if p not in index:
+            index[p] = len(P)
+            P.append(p)
+    return P, [tuple(index[points[v]] for v in f) for f in faces]
+
+
 # ----- the corpus ------------------------------------------------------------------------
 def corpus():
     """(name, extension, content as str or bytes, expected exit code, extra arguments)."""
@@ -204,6 +214,13 @@ def corpus():
     add("off_touching_ok", "off", off(*boxes([((0, 0, 0), (1, 1, 1), 0), ((1, 0, 0), (2, 1, 1), 0)])), 0)
     add("off_edge_touching_ok", "off", off(*boxes([((0, 0, 0), (1, 1, 1), 0), ((1, 1, 0), (2, 2, 1), 0)])), 0)
     add("off_same_cube_twice", "off", off(*boxes([((0, 0, 0), (1, 1, 1), 0), ((0, 0, 0), (1, 1, 1), 0)])), 1)
+    # the same, sharing the vertices where they touch (edges with four faces)
+    add("off_edge_touching_shared_ok", "off", off(*shared(*boxes([((0, 0, 0), (1, 1, 1), 0), ((1, 1, 0), (2, 2, 1), 0)]))), 0)
+    add("off_face_touching_shared_ok", "off", off(*shared(*boxes([((0, 0, 0), (1, 1, 1), 0), ((1, 0, 0), (2, 1, 1), 0)]))), 0)
+    # (CGAL's soup repair merges the repeated faces: the union, one cube, is summed)
+    add("off_same_cube_twice_shared_ok", "off", off(*shared(*boxes([((0, 0, 0), (1, 1, 1), 0), ((0, 0, 0), (1, 1, 1), 0)]))), 0)
+    add("off_overlapping_cubes_shared_edge", "off",
+        off(*shared(*boxes([((0, 0, 0), (2, 2, 2), 0), ((0, 0, 0), (2, 3, 3), 0)]))), 1)
     si = list(CUBE)
     si[7] = (0.25, 0.5, -1)
     add("off_self_intersecting", "off", off(si, CUBE_F), 1)
@@ -338,6 +355,68 @@ def corpus():
     return C
 
 
+# Every command shares the readers and the input checks: each refused file is also given to
+# the other commands (as their first mesh), which must refuse it the same way.
+COMMANDS = {
+    "offset": lambda f, o: ["offset", f, "-r", "0.25", "-d", "0.5", "-o", o],
+    "erode": lambda f, o: ["offset", f, "--erode", "-r", "0.1", "-d", "0.5", "-o", o],
+    "sweep": lambda f, o: ["sweep", f, "--path", "PATH", "-d", "0.5", "-o", o],
+    "pd": lambda f, o: ["pd", f, "TET", "-d", "0.5", "--at", "0.2", "0.2", "0.2"],
+    "plan": lambda f, o: ["plan", f, "TET", "-d", "0.5", "--start", "-5", "0", "0", "--goal", "5", "0", "0"],
+    "validate": lambda f, o: ["validate", f, "TET", "-d", "0.5"],
+}
+
+
+def command_cases():
+    """Options and side files of the other commands: (name, arguments, expected exit code).
+    CUBE, TET, PATH (a valid 3-point polyline), DIR and OUT are replaced by the runner."""
+    C = []
+
+    def add(name, args, code):
+        C.append(("cmd_" + name, args, code))
+    off_ = ["offset", "CUBE", "-d", "0.5", "-o", "OUT"]
+    for r, code in [("0", 2), ("-1", 2), ("nan", 2), ("inf", 2), ("1e308", 3), ("abc", 2), ("0.25", 0)]:
+        add("offset_r_" + r, off_ + ["-r", r], code)
+    for e, code in [("0", 2), ("1", 2), ("nan", 2), ("-0.1", 2), ("1e-300", 3), ("0.5", 0)]:
+        add("offset_sphere_error_" + e, off_ + ["-r", "0.25", "--sphere-error", e], code)
+    add("offset_cube", off_ + ["-r", "0.25", "--cube"], 0)
+    add("erode_too_deep", off_ + ["-r", "5", "--erode"], 0)
+    add("erode_open_mesh", ["offset", "DIR/open.off", "--erode", "-r", "0.1", "-d", "0.5", "-o", "OUT"], 1)
+    add("offset_no_mesh", ["offset", "-r", "0.25", "-d", "0.5", "-o", "OUT"], 2)
+    sw = ["sweep", "CUBE", "-d", "0.5", "-o", "OUT", "--path"]
+    for name, text, code in [("ok", "0 0 0\n1 0 0\n1 1 0\n", 0), ("empty", "", 1), ("one_point", "0 0 0\n", 1),
+                             ("repeated_point", "0 0 0\n0 0 0\n1 0 0\n", 1), ("nan", "0 0 0\nnan 0 0\n", 1),
+                             ("inf", "0 0 0\ninf 0 0\n", 1), ("two_numbers", "0 0 0\n1 0\n", 1),
+                             ("garbage", "\x00\xff garbage\n", 1), ("huge", "0 0 0\n1e308 0 0\n", 3),
+                             ("comma", "0,0,0\n1,0,0\n", 1), ("extra_number", "0 0 0 1\n1 0 0\n", 1)]:
+        add("sweep_path_" + name, sw + ["DIR/path_%s.txt" % name, "WRITE:" + text], code)
+    add("sweep_path_missing", sw + ["DIR/missing.txt"], 1)
+    add("sweep_path_directory", sw + ["DIR"], 1)
+    pd = ["pd", "CUBE", "TET", "-d", "0.5"]
+    for name, at, code in [("overlap", ["0.2", "0.2", "0.2"], 0), ("free", ["9", "9", "9"], 0),
+                           ("nan", ["nan", "0", "0"], 2), ("two_values", ["1", "2"], 2), ("text", ["a", "b", "c"], 2),
+                           ("huge", ["1e308", "0", "0"], 0), ("inf", ["inf", "0", "0"], 2)]:
+        add("pd_at_" + name, pd + ["--at"] + at, code)
+    add("pd_no_at", pd, 2)
+    pl = ["plan", "CUBE", "TET", "-d", "0.5"]
+    for name, extra, code in [("ok", ["--start", "-5", "0", "0", "--goal", "5", "0", "0"], 0),
+                              ("start_overlaps", ["--start", "0.2", "0.2", "0.2", "--goal", "5", "0", "0"], 1),
+                              ("nan_goal", ["--start", "-5", "0", "0", "--goal", "nan", "0", "0"], 2),
+                              ("no_goal", ["--start", "-5", "0", "0"], 2),
+                              ("two_starts", ["--start", "-5", "0", "0", "--start", "-6", "0", "0", "--goal", "5", "0", "0"], 2),
+                              ("k_zero", ["--start", "-5", "0", "0", "--goal", "5", "0", "0", "-k", "0"], 2),
+                              ("k_huge", ["--start", "-5", "0", "0", "--goal", "5", "0", "0", "-k", "1e12"], 2)]:
+        add("plan_" + name, pl + extra, code)
+    va = ["validate", "CUBE", "TET", "-d", "0.5"]
+    add("validate_ok", va, 0)
+    for name, content, code in [("empty", "", 1), ("garbage", "garbage\n", 1), ("binary", "\x00" * 64, 1),
+                                ("truncated", "TRUNCATED", 1), ("header_only", "Selective Nef Complex\n", 1)]:
+        add("validate_exact_" + name, va + ["--exact", "DIR/ref_%s.nef3" % name, "WRITE:" + content], code)
+    add("validate_exact_missing", va + ["--exact", "DIR/missing.nef3"], 1)
+    add("validate_save_exact_missing_dir", va + ["--save-exact", "DIR/missing/x.nef3"], 1)
+    return C
+
+
 def run(pmsum, args, cwd):
     """(exit code or -signal, stdout, stderr, seconds, peak RSS in kB, timed out)."""
     def limits():
@@ -368,6 +447,42 @@ def digest(path):
         return hashlib.sha256(f.read()).hexdigest()
 
 
+def check(pmsum, args, code, inputs, out_dir, work):
+    """Runs one case; (outcome, problems, stderr)."""
+    before = {p: digest(p) for p in inputs if os.path.isfile(p)}
+    got, stdout, stderr, seconds, rss, timed_out = run(pmsum, args, work)
+    outcome = ("hung" if timed_out else "crashed" if got < 0 or got >= 128 else
+               "accepted" if got == 0 else "refused (exit %d)" % got)
+    problems = []
+    if timed_out:
+        problems.append("hang (> %d s)" % TIMEOUT)
+    elif got < 0 or got >= 128:
+        problems.append("crash (exit %d)" % got)
+    elif got != code:
+        problems.append("exit %d, expected %d" % (got, code))
+    lines = [l for l in stderr.splitlines() if "note:" not in l]
+    if not timed_out and got in CLASSES and got == code and got != 0:
+        if not lines or not CLASSES[got].search(lines[0]):
+            problems.append("message class: %r" % (lines[:1],))
+        elif len(lines) != 1:
+            problems.append("error is not one line: %r" % lines)
+    if rss > RSS_LIMIT_KB:
+        problems.append("peak RSS %d MiB" % (rss // 1024))
+    left = [f for f in os.listdir(out_dir) if got != 0 or f.startswith(".pmsum-")]
+    left += [f for f in os.listdir(work) if f.startswith(".pmsum-")]
+    if left:
+        problems.append("files left behind: %s" % left[:3])
+    for p, h in before.items():
+        if os.path.exists(p) and digest(p) != h:
+            problems.append("input changed: %s" % os.path.basename(p))
+    return outcome, problems, stderr
+
+
+def clear(out_dir):
+    for f in os.listdir(out_dir):
+        os.remove(os.path.join(out_dir, f))
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
@@ -377,77 +492,104 @@ def main():
     if "--list" in sys.argv:
         for name, ext, _, code, _ in cases:
             print(code, name)
+        for name, _, code in command_cases():
+            print(code, name)
         return 0
     keep = sys.argv[sys.argv.index("--keep") + 1] if "--keep" in sys.argv else None
     work = keep or tempfile.mkdtemp(prefix="pmsum-corpus-")
     os.makedirs(work, exist_ok=True)
-    cube, tet = os.path.join(work, "cube.off"), os.path.join(work, "tet.off")
-    with open(cube, "w") as f:
-        f.write(off(CUBE, CUBE_F))
-    with open(tet, "w") as f:
-        f.write(off(TET, TET_F))
-    passed = failed = 0
+    cube, tet, path = (os.path.join(work, n) for n in ("cube.off", "tet.off", "path.txt"))
+    for name, text in [(cube, off(CUBE, CUBE_F)), (tet, off(TET, TET_F)), (path, "0 0 0\n1 0 0\n1 1 0\n"),
+                       (os.path.join(work, "open.off"), off(CUBE, CUBE_F[2:]))]:
+        with open(name, "w") as f:
+            f.write(text)
+    out_dir = os.path.join(work, "out")
+    os.makedirs(out_dir, exist_ok=True)
+    out = os.path.join(out_dir, "out.xyz")
+    results = collections.Counter()
     outcomes = collections.Counter()
-    for name, ext, content, code, extra in cases:
-        out_dir = os.path.join(work, "out_" + name)
-        os.makedirs(out_dir, exist_ok=True)
-        if ext is not None:
-            path = os.path.join(work, name + "." + ext)
-            with open(path, "wb") as f:
-                f.write(content if isinstance(content, bytes) else content.encode())
-            # the hostile file as P, and as Q when it is valid (both readers' paths)
-            args = ["sum", path, tet, "-d", "0.5", "-o", os.path.join(out_dir, "out.xyz")]
-        else:
-            path = cube
-            extra = [a.replace("DIR", out_dir).replace("INPUT", cube) for a in extra]
-            if "-o" not in extra:
-                extra += ["-o", os.path.join(out_dir, "out.xyz")]
-            if extra[:1] == ["-d"] and len(extra) == 1:
-                extra = ["-o", os.path.join(out_dir, "out.xyz"), "-d"]
-            args = ["sum", cube, tet] + extra
-        before = {p: digest(p) for p in (path, cube, tet)}
-        got, stdout, stderr, seconds, rss, timed_out = run(pmsum, args + ["--quiet"] * 0, work)
-        outcomes[("hung" if timed_out else "crashed" if got < 0 or got >= 128 else
-                  "accepted" if got == 0 else "refused (exit %d)" % got)] += 1
-        problems = []
-        if timed_out:
-            problems.append("hang (> %d s)" % TIMEOUT)
-        elif got < 0 or got >= 128:
-            problems.append("crash (exit %d)" % got)
-        elif got != code:
-            problems.append("exit %d, expected %d" % (got, code))
-        lines = [l for l in stderr.splitlines() if "note:" not in l]
-        if not timed_out and got in CLASSES and got == code:
-            if not lines or not CLASSES[got].search(lines[0]):
-                problems.append("message class: %r" % (lines[:1],))
-            elif got != 0 and len(lines) != 1:
-                problems.append("error is not one line: %r" % lines)
-        if rss > RSS_LIMIT_KB:
-            problems.append("peak RSS %d MiB" % (rss // 1024))
-        left = [f for f in os.listdir(out_dir) if got != 0 or f.startswith(".pmsum-")]
-        left += [f for f in os.listdir(work) if f.startswith(".pmsum-")]
-        if left:
-            problems.append("files left behind: %s" % left[:3])
-        for p, h in before.items():
-            if os.path.exists(p) and digest(p) != h:
-                problems.append("input changed: %s" % os.path.basename(p))
+
+    def record(label, outcome, problems, stderr):
+        outcomes[outcome] += 1
+        results["failed" if problems else "passed"] += 1
         if problems:
-            failed += 1
-            print("FAILED %s: %s" % (name, "; ".join(problems)))
+            print("FAILED %s: %s" % (label, "; ".join(problems)))
             for l in stderr.splitlines()[-3:]:
                 print("    " + l[:200])
+        clear(out_dir)
+
+    def output_bytes():
+        with open(out, "rb") as f:
+            return f.read()
+
+    # 1. hostile files (as P of sum), and option values of sum
+    for name, ext, content, code, extra in cases:
+        if ext is not None:
+            file = os.path.join(work, name + "." + ext)
+            with open(file, "wb") as f:
+                f.write(content if isinstance(content, bytes) else content.encode())
+            args = ["sum", file, tet, "-d", "0.5", "-o", out]
         else:
-            passed += 1
-        for f in os.listdir(out_dir):
-            os.remove(os.path.join(out_dir, f))
-        os.rmdir(out_dir)
+            file = cube
+            extra = [a.replace("DIR", out_dir).replace("INPUT", cube) for a in extra]
+            if "-o" not in extra:
+                extra += ["-o", out]
+            if extra[:1] == ["-d"] and len(extra) == 1:
+                extra = ["-o", out, "-d"]
+            args = ["sum", cube, tet] + extra
+        outcome, problems, stderr = check(pmsum, args, code, [file, cube, tet], out_dir, work)
+        # valid inputs: one thread and three give the same bytes
+        if ext is not None and code == 0 and not problems:
+            first = output_bytes()
+            for threads in ("1", "3"):
+                clear(out_dir)
+                o2, p2, _ = check(pmsum, args + ["--threads", threads], 0, [file], out_dir, work)
+                problems += p2
+                if not p2 and output_bytes() != first:
+                    problems.append("--threads %s: output differs" % threads)
+            results["thread checks"] += 1
+        record(name, outcome, problems, stderr)
+
+    # 2. every refused file through the other commands
+    for name, ext, content, code, extra in cases:
+        if ext is None or code != 1:
+            continue
+        file = os.path.join(work, name + "." + ext)
+        for command, make in COMMANDS.items():
+            args = [a.replace("PATH", path).replace("TET", tet) for a in make(file, out)]
+            record("%s (%s)" % (name, command), *check(pmsum, args, code, [file, tet, path], out_dir, work))
+
+    # 3. options and side files of the other commands
+    truncated = None
+    for name, args, code in command_cases():
+        args = [a.replace("CUBE", cube).replace("TET", tet).replace("DIR", work).replace("OUT", out) for a in args]
+        if any(a.startswith("WRITE:") for a in args):
+            i = next(i for i, a in enumerate(args) if a.startswith("WRITE:"))
+            text = args.pop(i)[len("WRITE:"):]
+            if text == "TRUNCATED":
+                if truncated is None:
+                    ref = os.path.join(work, "ref.nef3")
+                    run(pmsum, ["validate", cube, tet, "-d", "0.5", "--save-exact", ref], work)
+                    with open(ref, "rb") as f:
+                        data = f.read()
+                    truncated = data[: len(data) // 2]
+                    os.remove(ref)
+                content = truncated
+            else:
+                content = text.encode("latin-1")
+            with open(args[i - 1], "wb") as f:
+                f.write(content)
+        record(name, *check(pmsum, args, code, [cube, tet, path], out_dir, work))
+
+    os.rmdir(out_dir)
     if not keep:
         for f in os.listdir(work):
             os.remove(os.path.join(work, f))
         os.rmdir(work)
     print("outcomes: " + ", ".join("%s %d" % kv for kv in sorted(outcomes.items())))
-    print("corpus: %d passed, %d failed" % (passed, failed))
-    return 0 if failed == 0 else 1
+    print("valid inputs with 1 = 2 = 3 threads checked: %d" % results["thread checks"])
+    print("corpus: %d passed, %d failed" % (results["passed"], results["failed"]))
+    return 0 if results["failed"] == 0 else 1
 
 
 if __name__ == "__main__":
