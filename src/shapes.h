@@ -189,16 +189,24 @@ inline Soup transformed(Soup s, double scale, const Point& shift = {0, 0, 0})
   return s;
 }
 
-/// Turns a soup by the rotation of the quaternion (2, 1, 1, 1) (about the axis (1, 1, 1) by
-/// about 44.4 degrees) and scales it by 7/8: the matrix is M / 8 with M integer, so a soup
-/// with small dyadic coordinates keeps exact coordinates, coplanar faces stay coplanar and
-/// touching faces keep touching. Its pieces are no longer axis-aligned boxes.
-inline Soup rotated(Soup s)
+/// Turns a soup by the rotation of the integer quaternion q = (a, b, c, e) and scales it by
+/// N / 2^k, N = a^2 + b^2 + c^2 + e^2 and 2^k the smallest power of two >= N: the matrix is
+/// M / 2^k with M integer, so a soup with small dyadic coordinates keeps exact coordinates,
+/// coplanar faces stay coplanar and touching faces keep touching. The default (2, 1, 1, 1)
+/// turns about the axis (1, 1, 1) by about 44.4 degrees and scales by 7/8. Its pieces are no
+/// longer axis-aligned boxes.
+/// @pre q is not zero.
+inline Soup rotated(Soup s, const std::array<int, 4>& q = {2, 1, 1, 1})
 {
-  static const int M[3][3] = {{3, -2, 6}, {6, 3, -2}, {-2, 6, 3}}; // 7 x a rotation matrix
-  auto f = [](Point& p) {
+  const long a = q[0], b = q[1], c = q[2], e = q[3];
+  const long M[3][3] = {{a * a + b * b - c * c - e * e, 2 * (b * c - a * e), 2 * (b * e + a * c)},
+                        {2 * (b * c + a * e), a * a - b * b + c * c - e * e, 2 * (c * e - a * b)},
+                        {2 * (b * e - a * c), 2 * (c * e + a * b), a * a - b * b - c * c + e * e}};
+  double scale = 1;
+  while (scale < double(a * a + b * b + c * c + e * e)) scale *= 2;
+  auto f = [&](Point& p) {
     Point r{};
-    for (int i = 0; i < 3; ++i) r[i] = (M[i][0] * p[0] + M[i][1] * p[1] + M[i][2] * p[2]) / 8;
+    for (int i = 0; i < 3; ++i) r[i] = (M[i][0] * p[0] + M[i][1] * p[1] + M[i][2] * p[2]) / scale;
     p = r;
   };
   for (auto& p : s.points) f(p);

@@ -49,10 +49,16 @@ struct Outcome
   double worst = 0; // / d
 };
 
-Outcome validate(const Mesh& P, const Mesh& Q, double d, const Reference_nef& ref, bool negate = false)
+std::vector<Record> sum_records(const Mesh& P, const Mesh& Q, double d, bool negate)
 {
-  std::vector<CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, IK>> records;
+  std::vector<Record> records;
   CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records), CGAL::parameters::negate_first_mesh(negate));
+  return records;
+}
+
+/// Exactness of every point and coverage of every shell of the exact sum.
+Outcome check(const std::vector<Record>& records, const Mesh& P, const Mesh& Q, double d, const Reference_nef& ref)
+{
   Outcome o;
   o.points = records.size();
   std::vector<IK::Point_3> pts;
@@ -70,6 +76,11 @@ Outcome validate(const Mesh& P, const Mesh& Q, double d, const Reference_nef& re
     o.worst = (std::max)(o.worst, c.worst_distance / d);
   }
   return o;
+}
+
+Outcome validate(const Mesh& P, const Mesh& Q, double d, const Reference_nef& ref, bool negate = false)
+{
+  return check(sum_records(P, Q, d, negate), P, Q, d, ref);
 }
 
 } // namespace
@@ -237,4 +248,194 @@ TEST_CASE("penetration depth of a non-convex pair against the exact Nef contact 
     REQUIRE(r.depth < exact + d);
   }
   CHECK(inside > 20);
+}
+
+// ----- differential test against Nef ------------------------------------------------------
+// Random small solids (test/differential.h), one per seed. CI runs seeds 0-29; for long runs
+// test/differential/run_long.py sets
+//   PMSUM_DIFFERENTIAL_SEEDS=first:count  the seed range (default 0:30),
+//   PMSUM_DIFFERENTIAL_OUT=DIR            where failing cases are written (default:
+//                                         differential-failures/ in the working directory),
+//   PMSUM_DIFFERENTIAL_CSV=FILE           one line per case.
+// A failing case is written as P.off, Q.off and case.txt (d, negate, seed, kind): copied
+// into test/differential/cases/, it is run by the regression test below.
+
+#include "differential.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+namespace {
+
+std::string env_or(const char* name, const std::string& fallback)
+{
+  const char* v = std::getenv(name);
+  return v && *v ? std::string(v) : fallback;
+}
+
+std::string first_line(const std::string& s)
+{
+  std::string l = s.substr(0, s.find('\n'));
+  std::replace(l.begin(), l.end(), '"', '\'');
+  return l;
+}
+
+void write_case(const Differential_case& c, const std::filesystem::path& dir)
+{
+  std::filesystem::create_directories(dir);
+  write_off(c.P, (dir / "P.off").string());
+  write_off(c.Q, (dir / "Q.off").string());
+  std::ofstream out(dir / "case.txt");
+  out.precision(17);
+  out << "d " << c.d << "\nnegate " << c.negate << "\nseed " << c.seed << "\nkind " << c.kind << "\nrotation "
+      << c.rotation[0] << ' ' << c.rotation[1] << ' ' << c.rotation[2] << ' ' << c.rotation[3] << '\n';
+}
+
+/// One case: the sum (or the refusal of its input), the exact Nef sum, their comparison.
+struct Differential_result
+{
+  std::string status; // "ok", "failed", "refused" (input refused), "nef failed"
+  std::string message;
+  Outcome outcome;
+  double seconds_pmsum = 0, seconds_nef = 0;
+};
+
+Differential_result run_case(const Mesh& P, const Mesh& Q, double d, bool negate)
+{
+  using clock = std::chrono::steady_clock;
+  Differential_result r;
+  std::vector<Record> records;
+  const auto t0 = clock::now();
+  try {
+    records = sum_records(P, Q, d, negate);
+  } catch (const CGAL::Pmsum::Invalid_input& e) {
+    r.status = "refused";
+    r.message = e.what();
+    return r;
+  }
+  const auto t1 = clock::now();
+  r.seconds_pmsum = std::chrono::duration<double>(t1 - t0).count();
+  std::optional<Reference_nef> ref;
+  try {
+    ref.emplace(P, Q, negate);
+  } catch (const std::exception& e) {
+    r.status = "nef failed";
+    r.message = e.what();
+    return r;
+  }
+  r.seconds_nef = std::chrono::duration<double>(clock::now() - t1).count();
+  r.outcome = check(records, P, Q, d, *ref);
+  const bool ok = r.outcome.off_boundary == 0 && r.outcome.covered == r.outcome.shells && r.outcome.shells > 0;
+  r.status = ok ? "ok" : "failed";
+  return r;
+}
+
+} // namespace
+
+TEST_CASE("differential: random solids against the exact Nef sum", "[validation][differential]")
+{
+  const std::string seeds = env_or("PMSUM_DIFFERENTIAL_SEEDS", "0:30");
+  const unsigned first = unsigned(std::stoul(seeds.substr(0, seeds.find(':'))));
+  const unsigned count = unsigned(std::stoul(seeds.substr(seeds.find(':') + 1)));
+  const std::filesystem::path out_dir = env_or("PMSUM_DIFFERENTIAL_OUT", "differential-failures");
+  std::ofstream csv;
+  if (const char* path = std::getenv("PMSUM_DIFFERENTIAL_CSV")) {
+    csv.open(path);
+    csv << "seed,kind,negate,rotated,P_faces,Q_faces,d,status,points,shells,voids,off_boundary,covered,worst_over_d,"
+           "seconds_pmsum,seconds_nef,message\n";
+  }
+  std::map<std::string, std::size_t> statuses;
+  for (unsigned seed = first; seed < first + count; ++seed) {
+    const Differential_case c = make_differential_case(seed);
+    const Mesh P = to_mesh<Mesh>(c.P), Q = to_mesh<Mesh>(c.Q);
+    const Differential_result r = run_case(P, Q, c.d, c.negate);
+    ++statuses[r.status];
+    const Outcome& o = r.outcome;
+    if (csv)
+      csv << seed << ',' << c.kind << ',' << c.negate << ',' << (c.rotation[0] != 1 || c.rotation[1] || c.rotation[2] || c.rotation[3])
+          << ',' << num_faces(P) << ',' << num_faces(Q) << ',' << c.d << ',' << r.status << ',' << o.points << ','
+          << o.shells << ',' << o.voids << ',' << o.off_boundary << ',' << o.covered << ',' << o.worst << ','
+          << r.seconds_pmsum << ',' << r.seconds_nef << ",\"" << first_line(r.message) << '"' << std::endl;
+    INFO("seed " << seed << " (" << c.kind << (c.negate ? ", contact space" : "") << "): " << r.status << " "
+                 << r.message << "; points " << o.points << ", shells " << o.shells << " (voids " << o.voids
+                 << "), off the boundary " << o.off_boundary << ", covered " << o.covered << ", worst "
+                 << o.worst << " d");
+    // Inputs are exact except the rounded vertices of unions: only those may be refused.
+    if (r.status == "failed" || (r.status == "refused" && c.kind != "union"))
+      write_case(c, out_dir / ("seed-" + std::to_string(seed)));
+    if (r.status == "nef failed") // CGAL's, not ours: kept apart, to report upstream
+      write_case(c, out_dir / ("nef-failed-seed-" + std::to_string(seed)));
+    CHECK(r.status != "failed");
+    if (c.kind != "union") CHECK(r.status != "refused");
+  }
+  std::ostringstream summary;
+  for (const auto& [status, n] : statuses) summary << ' ' << status << ' ' << n;
+  WARN("differential cases " << first << ".." << first + count - 1 << ":" << summary.str());
+  CHECK(statuses["ok"] * 10 >= count * 8); // most cases must be decided, not skipped
+}
+
+namespace {
+
+struct Stored_case
+{
+  std::string name;
+  Mesh P, Q;
+  double d = 0;
+  bool negate = false;
+  bool known_gap = false; // "known issue 12" in case.txt: a coverage gap not closed yet
+};
+
+/// The cases in test/differential/cases/ (each P.off, Q.off, case.txt), in name order.
+std::vector<Stored_case> stored_cases()
+{
+  std::vector<std::filesystem::path> dirs;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(CGAL_PMSUM_SOURCE_DIR) + "/test/differential/cases"))
+    dirs.push_back(e.path());
+  std::sort(dirs.begin(), dirs.end());
+  std::vector<Stored_case> cases;
+  for (const auto& dir : dirs) {
+    Stored_case c;
+    c.name = dir.filename().string();
+    REQUIRE(CGAL::IO::read_polygon_mesh((dir / "P.off").string(), c.P));
+    REQUIRE(CGAL::IO::read_polygon_mesh((dir / "Q.off").string(), c.Q));
+    std::ifstream in(dir / "case.txt");
+    for (std::string key; in >> key;) {
+      if (key == "d") in >> c.d;
+      else if (key == "negate") in >> c.negate;
+      else if (key == "known") c.known_gap = true;
+      std::getline(in, key);
+    }
+    REQUIRE(c.d > 0);
+    cases.push_back(std::move(c));
+  }
+  return cases;
+}
+
+} // namespace
+
+TEST_CASE("differential regressions: exact, and covered unless a known gap", "[validation][differential]")
+{
+  const auto cases = stored_cases();
+  REQUIRE(!cases.empty());
+  for (const Stored_case& c : cases) {
+    const Differential_result r = run_case(c.P, c.Q, c.d, c.negate);
+    INFO(c.name << ": " << r.status << " " << r.message << ", worst coverage " << r.outcome.worst << " d");
+    REQUIRE((r.status == "ok" || r.status == "failed"));
+    CHECK(r.outcome.off_boundary == 0);
+    if (!c.known_gap) CHECK(r.outcome.covered == r.outcome.shells);
+  }
+}
+
+// Fails while the gaps stay open (a pass here means issue 12 closed them: drop the "known"
+// lines from their case.txt, and this test).
+TEST_CASE("differential regressions: the known coverage gaps are still open", "[validation][differential][!shouldfail]")
+{
+  for (const Stored_case& c : stored_cases()) {
+    if (!c.known_gap) continue;
+    const Differential_result r = run_case(c.P, c.Q, c.d, c.negate);
+    INFO(c.name << ": worst coverage " << r.outcome.worst << " d");
+    CHECK(r.outcome.covered == r.outcome.shells);
+  }
 }
