@@ -206,14 +206,20 @@ inline std::size_t memory_budget_bytes()
   return std::size_t(4) << 30;
 }
 
-/// Options shared by the commands that compute a sum (sum, validate).
-const char* const sum_options_help =
+/// Options of every command that reads two meshes (sum, validate, pd).
+const std::string input_options_help =
   "  P, Q                   triangle meshes (.off, .obj, .ply, .stl); other polygons are\n"
   "                         triangulated, closed meshes oriented outward (with a note)\n"
   "  -d D                   covering distance (> 0)\n"
   "  --relative             D is a fraction of the diagonal of the bounding box of P + Q\n"
-  "  --negate-p             boundary of -P + Q (contact space of robot P among obstacles Q)\n"
   "  --scale-q S            multiply Q's coordinates by S first (e.g. to size a tool)\n"
+  "  --quiet                no notes and no progress bar\n";
+const std::vector<std::string> input_valued = {"-d", "--scale-q"};
+const std::vector<std::string> input_flags = {"--relative", "--quiet", "--help", "-h"};
+
+/// Options shared by the commands that compute a sum (sum, validate).
+const std::string sum_options_help = input_options_help +
+  "  --negate-p             boundary of -P + Q (contact space of robot P among obstacles Q)\n"
   "  --no-normal-filter     test every sample pair with the CD filter (slow)\n"
   "  --no-cd-filter         keep every candidate of the normal filter (not all on the boundary)\n"
   "  --no-octree-filter     CD-test candidates in cells certified interior too (same output, slower)\n"
@@ -223,8 +229,7 @@ const char* const sum_options_help =
   "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
   "                         K to OUT with .levelK before the extension (validate: the last)\n"
   "  --threads N            worker threads (default: all cores; 1 = sequential)\n"
-  "  --force                run even if the estimated output exceeds the available memory\n"
-  "  --quiet                no notes and no progress bar\n";
+  "  --force                run even if the estimated output exceeds the available memory\n";
 const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
 const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter", "--all-candidates",
                                             "--force", "--quiet", "--help", "-h"};

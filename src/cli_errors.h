@@ -14,6 +14,8 @@ namespace pmsum_cli {
 struct Error : std::runtime_error { using std::runtime_error::runtime_error; };
 /// A command-line mistake: printed with a usage hint, exit code 2.
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+/// A command that does not exist: the hint is the list of commands, exit code 2.
+struct Unknown_command : Usage_error { using Usage_error::Usage_error; };
 /// A run refused because it would exhaust the machine (--force overrides): exit code 3.
 struct Refused : std::runtime_error { using std::runtime_error::runtime_error; };
 

@@ -211,7 +211,7 @@ const std::string pd_help = std::string(
   "exact one. Overlap itself is decided exactly. One line per --at:\n"
   "  X Y Z overlap DEPTH DX DY DZ     or     X Y Z free\n"
   "\n"
-  "  --json FILE            summary (contact points, build and query seconds)\n") + sum_options_help;
+  "  --json FILE            summary (contact points, build and query seconds)\n") + input_options_help;
 
 int command_pd(int argc, char** argv)
 {
@@ -231,9 +231,9 @@ int command_pd(int argc, char** argv)
     at.push_back(t);
     i += 3;
   }
-  std::vector<std::string> valued = sum_valued;
+  std::vector<std::string> valued = input_valued;
   valued.push_back("--json");
-  const Arguments args(int(rest.size()), rest.data(), 2, valued, sum_flags);
+  const Arguments args(int(rest.size()), rest.data(), 2, valued, input_flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << pd_help; return 0; }
   if (at.empty()) throw Usage_error("pd needs at least one --at X Y Z");
   std::vector<std::pair<std::string, std::string>> outputs;
@@ -475,7 +475,10 @@ int main(int argc, char** argv)
     if (command == "pd") return command_pd(argc, argv);
     if (command == "sweep") return command_sweep(argc, argv);
     if (command == "plan") return command_plan(argc, argv);
-    throw Usage_error("unknown command '" + command + "'");
+    throw Unknown_command("unknown command '" + command + "'");
+  } catch (const Unknown_command& e) {
+    std::cerr << "pmsum: " << e.what() << " (see pmsum --help)\n";
+    return 2;
   } catch (const Usage_error& e) {
     std::cerr << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")
               << "--help)\n";

@@ -167,7 +167,13 @@ expect_fail 2 "needs a number" -- sum "$cube" "$tet" -d abc -o "$work/out.ply"
 expect_fail 2 ".ply or .xyz"  -- sum "$cube" "$tet" -d 0.1 -o "$work/out.txt"
 expect_fail 2 "unknown option" -- sum "$cube" "$tet" -d 0.1 -o "$work/out.ply" --bogus
 expect_fail 2 "two meshes"    -- sum "$cube" -d 0.1 -o "$work/out.ply"
-expect_fail 2 "unknown command" -- frobnicate
+expect_fail 2 "unknown command 'frobnicate' (see pmsum --help)" -- frobnicate
+expect_fail 2 "unknown command 'frobnicate' (see pmsum --help)" -- frobnicate --help
+# pd computes the contact space with its own settings: the sum's switches are not its options
+for o in --negate-p --all-candidates --no-cd-filter "--levels 1" "--threads 2"; do
+  expect_fail 2 "unknown option ${o% *}" -- pd "$cube" "$tet" -d 0.2 --at 0 0 0 $o
+done
+if "$pmsum" pd --help | grep -q -- "--levels\|--negate-p\|--threads"; then ko "pd --help lists options pd does not take"; else ok; fi
 expect_fail 3 "candidate points" -- sum "$data/knot1.off" "$data/elephant.off" -d 0.00002 --relative -o "$work/out.ply"
 # a covering distance too small for the sample lattice is a refusal for size (exit 3), --force or not
 expect_fail 3 "refused: d is too small" -- sum "$cube" "$tet" -d 1e-9 -o "$work/out.ply" --force
