@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Mesh input of the pmsum command-line tool. A file is read into a polygon soup, every
 // count its header declares checked against the file's size before anything is allocated

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Output files of the pmsum command-line tool. Every output path of a command is checked
 // before any work (not an input file, in an existing writable directory) by creating its

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Motion-planning problems built from boxes (tests, example, benchmark, pmsum generate):
 // the robot is the unit cube [0, 1]^3, the obstacles are unions of touching boxes, so that

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Named procedural models of the validation suite (pmsum generate NAME, and the tests that
 // reuse the cached exact boundaries in data/exact/). Changing a preset changes the exact

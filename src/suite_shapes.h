@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Procedural models for the validation suite: hooks, grates, frames of high genus, shells
 // with windows (easy hole), separated plates (difficult hole) and torus knots.

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // pmsum validate: our point-based sum against CGAL's exact Nef Minkowski sum.
 // Its own translation unit: it is the only one of the tool that compiles CGAL's Nef package.

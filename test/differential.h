@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Random small solids for the differential test against CGAL's exact Nef Minkowski sum: one
 // seed gives one case (P, Q, d, contact space or not). Kinds, by seed:

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Exact reference answers for Minkowski sums whose operands are unions of convex pieces:
 // (A1 u A2 u ...) + (B1 u B2 u ...) is the union of the convex hulls of the vertex sums

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The rich output record of CGAL::point_minkowski_sum(): a boundary point with its outward
 // normal and its provenance (which vertex, edge or face of P and of Q produced it, with the

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // CGAL::Pmsum::Nef_minkowski_sum_reference: the exact boundary of P + Q (or -P + Q) computed
 // with CGAL::minkowski_sum_3 on Nef polyhedra, to validate point-based results against:

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // CGAL::Pmsum::Translational_motion_planner: paths of a robot P translating among fixed
 // obstacles Q (paper section 9.2), from points covering the contact space C = boundary of

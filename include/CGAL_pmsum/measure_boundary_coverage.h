@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // CGAL::Pmsum::measure_boundary_coverage(): how well a point set covers a surface made of
 // shells (e.g. the exact boundary of a Minkowski sum, outer boundary and voids), shell by

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // CGAL::point_minkowski_sum_coarse_to_fine(): the points of point_minkowski_sum() for several
 // covering distances, coarse to fine, each level reusing the work of the coarser ones.

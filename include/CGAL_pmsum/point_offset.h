@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Offsetting and erosion with points (paper section 9.2, "Modeling"):
 //   point_offset(P, B, d, out)   points covering the boundary of P + B (B: a ball, a cube, ...)

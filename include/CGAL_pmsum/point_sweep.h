@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // CGAL::Pmsum::point_sweep(): points covering the boundary of the volume swept by a solid P
 // translating along a polyline (paper Fig. 11): the Minkowski sum P + path, with the path a

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 CGAL_pmsum contributors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Hostile-input corpus of the pmsum command-line tool.
 
 Generates malformed inputs for every reader (OFF, OBJ, PLY ASCII and binary, STL ASCII and

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 CGAL_pmsum contributors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Long run of the differential test against CGAL's exact Nef sum.
 
 Runs the "differential" test of test_validation over a seed range, split over processes,

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A small static bounding-volume hierarchy of boxes, for the simultaneous (two-tree)
 // traversal of the collision-detection filter (cd_filter.h). CGAL's AABB_tree does not

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2 of the pipeline: the candidates. A candidate is a sum p + q of a sample p of P and
 // a sample q of Q whose features form a pair kept by the normal filter. Candidates are not

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 4 of the pipeline: the covering net. The boundary candidates are a d/2-covering of
 // the boundary; a subset N in which every boundary candidate has a point closer than d/2 is

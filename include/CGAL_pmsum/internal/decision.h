@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 3 of the pipeline: the decision of every candidate, in this order:
 //   1. reuse      coarse to fine: a candidate the coarser level decided keeps its decision;

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A grid of the sphere of directions, used by the normal filter to avoid testing every
 // feature pair: each vertex or edge lists the cells in which it may be locally extreme, and

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Input stage: a triangle mesh (any CGAL FaceListGraph) is validated and copied into flat
 // arrays of exact double coordinates, with the combinatorics the later stages need

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A static tree for exact nearest-point queries over a large, fixed set of 3D points lying on a
 // surface (the contact space of Penetration_depth.h).

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Parallel loops (TBB) that fall back to plain loops: for_each_index for the stages that
 // decide independent items (normal filter, octree filter), run_in_waves for the stage whose

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The pipeline after the input stage, on two prepared meshes; this file only wires the stages:
 //   1. sampling.h       sampling resolutions of P and Q (d/2-coverings)

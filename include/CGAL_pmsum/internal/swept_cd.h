@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Exact collision test of a robot P translating along a segment among obstacles Q (the
 // local planner of Translational_motion_planner.h).
