@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Helpers of the pmsum command-line tool: checked mesh reading, output files that appear
 // only when complete, a JSON writer, a progress bar.
@@ -11,6 +11,7 @@
 #include "cli_input.h"
 #include "cli_output.h"
 
+#include <CGAL_pmsum/version.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 #include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
 
@@ -87,6 +88,8 @@ inline void write_points(Output_file& out, const std::vector<Oriented_point>& pt
 class Json
 {
 public:
+  /// Every summary starts with the version of the tool that wrote it.
+  Json() { str("pmsum_version", CGAL_PMSUM_VERSION); }
   Json& add(const std::string& key, const std::string& raw)
   {
     m_items.push_back("\"" + key + "\": " + raw);

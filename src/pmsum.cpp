@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // pmsum: command-line tool of CGAL_pmsum.
 //
@@ -38,7 +38,7 @@ const char* const usage_text =
   "  plan ROBOT OBSTACLE --start X Y Z --goal X Y Z -d D   a free path of a translating robot\n"
   "  generate NAME -o OUT  write a procedural model of the validation suite (.off)\n"
   "\n"
-  "pmsum <command> --help shows the options of a command.\n";
+  "pmsum <command> --help shows the options of a command; pmsum --version the version.\n";
 
 const std::string sum_help = std::string(
   "usage: pmsum sum P Q -d D -o OUT [options]\n"
@@ -468,6 +468,7 @@ int main(int argc, char** argv)
     if (argc < 2) { std::cerr << usage_text; return 2; }
     const std::string command = argv[1];
     if (command == "--help" || command == "-h" || command == "help") { std::cout << usage_text; return 0; }
+    if (command == "--version") { std::cout << "pmsum " << CGAL_PMSUM_VERSION << " (CGAL_pmsum, CGAL " << CGAL_VERSION_STR << ")\n"; return 0; }
     if (command == "sum") return command_sum(argc, argv);
     if (command == "validate") return command_validate(argc, argv);
     if (command == "generate") return command_generate(argc, argv);

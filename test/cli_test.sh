@@ -55,7 +55,7 @@ if [ $? = 0 ] && grep -q "triangulated 6 non-triangle faces" "$work/stderr" \
    && grep -q "reversed 4 of 4 faces" "$work/stderr"; then ok; else ko "quads + inward tetrahedron"; cat "$work/stderr"; fi
 n=$(wc -l < "$work/ok.xyz")
 if grep -q "\"output_points\": $n," "$work/ok.json" && [ "$n" -gt 100 ]; then ok; else ko "xyz lines ($n) vs JSON"; fi
-for key in '"samples"' '"candidates"' '"cd_queries"' '"normal_filter"' '"cd_filter"' '"total"'; do
+for key in '"pmsum_version"' '"samples"' '"candidates"' '"cd_queries"' '"normal_filter"' '"cd_filter"' '"total"'; do
   if grep -q "$key" "$work/ok.json"; then ok; else ko "JSON lacks $key"; fi
 done
 # every xyz line: six numbers, unit normal
@@ -169,6 +169,8 @@ expect_fail 2 "unknown option" -- sum "$cube" "$tet" -d 0.1 -o "$work/out.ply" -
 expect_fail 2 "two meshes"    -- sum "$cube" -d 0.1 -o "$work/out.ply"
 expect_fail 2 "unknown command 'frobnicate' (see pmsum --help)" -- frobnicate
 expect_fail 2 "unknown command 'frobnicate' (see pmsum --help)" -- frobnicate --help
+version=$(sed -n 's/^#define CGAL_PMSUM_VERSION "\(.*\)"/\1/p' "$data/../include/CGAL_pmsum/version.h")
+if [ -n "$version" ] && "$pmsum" --version | grep -q "^pmsum $version (CGAL_pmsum, CGAL 5\.5"; then ok; else ko "--version"; fi
 # pd computes the contact space with its own settings: the sum's switches are not its options
 for o in --negate-p --all-candidates --no-cd-filter "--levels 1" "--threads 2"; do
   expect_fail 2 "unknown option ${o% *}" -- pd "$cube" "$tet" -d 0.2 --at 0 0 0 $o

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // CGAL::point_minkowski_sum(): points covering the boundary of the Minkowski sum of two
 // triangle meshes (J.-M. Lien, "Covering Minkowski sum boundary using points with
@@ -23,6 +23,7 @@
 #include <CGAL_pmsum/Minkowski_sum_boundary_point.h>
 #include <CGAL_pmsum/Statistics.h>
 #include <CGAL_pmsum/exceptions.h>
+#include <CGAL_pmsum/version.h>
 #include <CGAL_pmsum/internal/mesh_data.h>
 #include <CGAL_pmsum/internal/pipeline.h>
 #include <CGAL_pmsum/named_parameters.h>

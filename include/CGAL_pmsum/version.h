@@ -1,0 +1,16 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The package's version (CMakeLists.txt reads it from here: one place).
+
+#ifndef CGAL_PMSUM_VERSION_H
+#define CGAL_PMSUM_VERSION_H
+
+#define CGAL_PMSUM_VERSION_MAJOR 0
+#define CGAL_PMSUM_VERSION_MINOR 1
+#define CGAL_PMSUM_VERSION_PATCH 0
+#define CGAL_PMSUM_VERSION "0.1.0"
+/// MAJOR * 10000 + MINOR * 100 + PATCH, for #if
+#define CGAL_PMSUM_VERSION_NR 100
+
+#endif // CGAL_PMSUM_VERSION_H
