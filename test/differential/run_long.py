@@ -9,7 +9,7 @@ outcomes per kind (ok / failed / input refused / Nef failed), worst coverage / d
 seconds of the point sum against Nef's. Failing cases are written to DIR/seed-N (P.off,
 Q.off, case.txt): copy one into test/differential/cases/ to make it a regression test.
 
-    run_long.py [--build build] [--seeds 0:2000] [--jobs 2] [--failures differential-failures]
+    run_long.py [--build build] [--seeds 0:2000] [--jobs 2] [--failures differential-failures] [--extend]
 """
 
 import argparse
@@ -30,6 +30,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--failures", default=os.path.abspath("differential-failures"))
     ap.add_argument("--results", default=os.path.join(ROOT, "benchmark", "results"))
+    ap.add_argument("--extend", action="store_true",
+                    help="keep the cases of the existing differential.csv outside the new seed range")
     a = ap.parse_args()
     first, count = (int(x) for x in a.seeds.split(":"))
     binary = os.path.join(a.build, "test", "test_validation")
@@ -57,6 +59,10 @@ def main():
         with open(part) as f:
             rows += list(csv.DictReader(f))
         os.remove(part)
+    previous = os.path.join(a.results, "differential.csv")
+    if a.extend and os.path.exists(previous):
+        with open(previous) as f:
+            rows += [r for r in csv.DictReader(f) if not first <= int(r["seed"]) < first + count]
     rows.sort(key=lambda r: int(r["seed"]))
     with open(os.path.join(a.results, "differential.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -75,11 +81,13 @@ def write_report(rows, seconds, a):
     kinds = sorted({r["kind"] for r in rows})
     statuses = ["ok", "failed", "refused", "nef failed"]
     lines = ["# Differential test against CGAL's exact Nef Minkowski sum", "",
-             "`test/differential/run_long.py --seeds %s --jobs %d`: %d random cases (test/differential.h) in %.0f s. "
+             "`test/differential/run_long.py --seeds %s --jobs %d`: %d random cases (test/differential.h; this run's "
+             "wall time %.0f s). "
              "For each: every output point exactly on the Nef boundary (exact point location) and every shell "
              "(outer boundaries and voids) covered within d (sampled at d/8). `refused`: the input was refused "
              "(only unions, whose rounded vertices may make a degenerate face, may be); `nef failed`: CGAL's "
-             "minkowski_sum_3 threw (not ours)." % (a.seeds, a.jobs, len(rows), seconds), "",
+             "minkowski_sum_3 failed an assertion, crashed or ran past the time limit (not ours)." % (
+                 a.seeds + (" and earlier runs (--extend)" if a.extend else ""), a.jobs, len(rows), seconds), "",
              "| kind | cases | " + " | ".join(statuses) + " | contact space | rotated | voids in the sum | "
              "worst coverage / d (max of ok) | Nef s / ours s (median) |",
              "|---|" + "---|" * (len(statuses) + 6)]
