@@ -451,19 +451,11 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& what, con
 
 } // namespace input_internal
 
-/// Reads a polygon soup from an .off, .ply, .obj or .stl file, checked (see the file comment).
-inline Polygon_soup read_soup(const std::string& path, const std::string& what)
+/// The checked polygon soup (see the file comment) of a file's contents `text` in the format
+/// `ext` names: "off", "ply", "stl" or "obj" (any other is read as OBJ).
+inline Polygon_soup parse_soup(std::string_view text, const std::string& ext, const std::string& what)
 {
-  namespace fs = std::filesystem;
   namespace in = input_internal;
-  const std::string ext = extension(path);
-  if (ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-    throw Error("cannot read " + what + ": unknown format '." + ext + "' (use .off, .obj, .ply or .stl)");
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw Error("cannot read " + what + ": no such file or not readable");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error("cannot read " + what + ": no such file or not readable");
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   const std::string fail = "cannot read " + what + ": ";
   Polygon_soup s = ext == "off" ? in::read_off(text, fail)
          : ext == "ply" ? in::read_ply(text, fail)
@@ -473,16 +465,29 @@ inline Polygon_soup read_soup(const std::string& path, const std::string& what)
   return s;
 }
 
-/// Reads a mesh (OFF, OBJ, PLY, STL) through a checked polygon soup (read_soup). A valid
-/// mesh is built as it is; only a soup that is not one is repaired (CGAL's PMP: duplicated
-/// points merged, non-manifold edges and vertices split, orientation made consistent).
-/// (Repairing valid input would merge the coincident vertices of solids that touch along
-/// faces and then drop the coincident faces, opening the mesh.) Non-triangle faces are
-/// triangulated and closed meshes oriented to bound a volume, with a note.
-inline Mesh read_mesh(const std::string& path, const std::string& name, bool quiet)
+/// Reads a polygon soup from an .off, .ply, .obj or .stl file, checked (see the file comment).
+inline Polygon_soup read_soup(const std::string& path, const std::string& what)
 {
-  const std::string what = name + " ('" + path + "')";
-  Polygon_soup s = read_soup(path, what);
+  namespace fs = std::filesystem;
+  const std::string ext = extension(path);
+  if (ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+    throw Error("cannot read " + what + ": unknown format '." + ext + "' (use .off, .obj, .ply or .stl)");
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw Error("cannot read " + what + ": no such file or not readable");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw Error("cannot read " + what + ": no such file or not readable");
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  return parse_soup(text, ext, what);
+}
+
+/// The mesh of a checked polygon soup (parse_soup). A valid mesh is built as it is; only a
+/// soup that is not one is repaired (CGAL's PMP: duplicated points merged, non-manifold
+/// edges and vertices split, orientation made consistent). (Repairing valid input would merge
+/// the coincident vertices of solids that touch along faces and then drop the coincident
+/// faces, opening the mesh.) Non-triangle faces are triangulated and closed meshes oriented
+/// to bound a volume, with a note.
+inline Mesh mesh_from_soup(Polygon_soup s, const std::string& what, bool quiet)
+{
   if (s.polygons.empty()) throw Error(what + " has no faces");
   for (const auto& p : s.points)
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
@@ -527,6 +532,14 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
              std::to_string(m.number_of_faces()) + " faces to bound its volume", quiet);
   }
   return m;
+}
+
+/// Reads a mesh (OFF, OBJ, PLY, STL) through a checked polygon soup: read_soup, then
+/// mesh_from_soup.
+inline Mesh read_mesh(const std::string& path, const std::string& name, bool quiet)
+{
+  const std::string what = name + " ('" + path + "')";
+  return mesh_from_soup(read_soup(path, what), what, quiet);
 }
 
 } // namespace pmsum_cli
