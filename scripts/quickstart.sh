@@ -2,7 +2,7 @@
 # Quick start on a fresh Debian 12 machine.
 #   scripts/quickstart.sh        install what is missing, build (Release), run pmsum on bundled data
 #   scripts/quickstart.sh test   same set-up, then run every test; then build the sanitized
-#                                subset with clang (build-san/) and run it
+#                                subset and the readers' fuzzer with clang (build-san/) and run them
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-demo}
@@ -38,13 +38,13 @@ case "$mode" in
   test)
     ctest --test-dir build --output-on-failure -j "$jobs"
     phase "Release tests"
-    # AddressSanitizer + UBSan (-O1, no -g): every test but the Nef validation, the corpus;
-    # a sanitizer report fails the test.
+    # AddressSanitizer + UBSan (-O1, no -g): every test but the Nef validation, the corpus,
+    # and a 60 s run of the readers' fuzzer; a sanitizer report fails the test.
     cmake -S . -B build-san -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DPMSUM_SANITIZE=ON > /dev/null
     cmake --build build-san -j "$jobs"
     phase "sanitizer build"
     ctest --test-dir build-san --output-on-failure -j "$jobs"
-    phase "sanitized tests"
+    phase "sanitized tests and fuzzer"
     ;;
   *)
     echo "usage: scripts/quickstart.sh [demo|test]" >&2

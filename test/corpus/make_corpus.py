@@ -10,10 +10,13 @@ hang (> 30 s), peak RSS over 2 GiB (address space capped at 4 GiB), output or te
 left behind after a failure, input file changed on disk.
 
     make_corpus.py PMSUM [--keep DIR] [--list] [--no-as-limit]
+    make_corpus.py --seeds DIR
 
 --keep DIR keeps the inputs and the work files in DIR. --no-as-limit leaves the address
 space uncapped (AddressSanitizer reserves terabytes of it: the sanitized tests pass it; their
-peak RSS is still checked).
+peak RSS is still checked). --seeds DIR writes each input file, without running anything, as a
+seed of the readers' fuzzer (test/fuzz/fuzz_readers.cpp): one byte naming the format ('0' OFF,
+'1' PLY, '2' STL, '3' OBJ), then the file.
 """
 
 import collections
@@ -373,10 +376,26 @@ def digest(path):
         return hashlib.sha256(f.read()).hexdigest()
 
 
+FUZZ_FORMAT = {"off": b"0", "ply": b"1", "stl": b"2", "obj": b"3"}
+
+
+def write_seeds(directory):
+    os.makedirs(directory, exist_ok=True)
+    files = [("cube", "off", off(CUBE, CUBE_F)), ("tet", "off", off(TET, TET_F))]
+    files += [(name, ext, content) for name, ext, content, _, _ in corpus() if ext is not None]
+    for name, ext, content in files:
+        with open(os.path.join(directory, name), "wb") as f:
+            f.write(FUZZ_FORMAT[ext] + (content if isinstance(content, bytes) else content.encode()))
+    print("%d seeds written to %s" % (len(files), directory))
+    return 0
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
         return 2
+    if sys.argv[1] == "--seeds":
+        return write_seeds(sys.argv[2])
     pmsum = os.path.abspath(sys.argv[1])
     as_limit = "--no-as-limit" not in sys.argv
     cases = corpus()
