@@ -16,11 +16,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/STL.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -507,6 +510,20 @@ inline Mesh mesh_from_soup(Polygon_soup s, const std::string& what, bool quiet)
   std::size_t polygons = 0;
   for (auto f : m.faces()) polygons += (m.degree(f) != 3);
   if (polygons > 0) {
+    // CGAL 5.5's triangulate_faces (its 2D constrained triangulation in the plane of the face's
+    // normal) corrupts the mesh on a face that is not a simple polygon in that plane: a face
+    // cycle with no end, which hangs every later stage. Such a face is refused first.
+    for (auto f : m.faces()) {
+      if (m.degree(f) == 3) continue;
+      std::vector<K::Point_3> corners;
+      for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) corners.push_back(m.point(v));
+      const K::Vector_3 normal = PMP::compute_face_normal(f, m);
+      if (normal == CGAL::NULL_VECTOR ||
+          !CGAL::is_simple_2(corners.begin(), corners.end(), CGAL::Projection_traits_3<K>(normal)))
+        throw Error(what + " has a face of " + std::to_string(corners.size()) +
+                    " vertices that is not a simple polygon (no area, or edges that cross, in its plane):"
+                    " it cannot be triangulated");
+    }
     if (!PMP::triangulate_faces(m))
       throw Error(what + " has faces that cannot be triangulated");
     note(what + ": triangulated " + std::to_string(polygons) + " non-triangle faces", quiet);

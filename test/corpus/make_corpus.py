@@ -192,6 +192,12 @@ def corpus():
                                              (1, 3, 7, 5)]), 0)
     # a repeated vertex closing a polygon, a duplicated face: not a mesh, repaired (CGAL's PMP)
     add("off_face_pentagon_repeat", "off", off(CUBE, [(0, 2, 3, 1, 0)] + CUBE_F[2:]), 0)
+    # a hexagon that crosses itself in its plane: CGAL 5.5's triangulate_faces made an endless
+    # face cycle of it (a hang; found by the readers' fuzzer); a planar star pentagon
+    add("off_face_not_simple_hexagon", "off", off([(1, 1, 1), (3, 3, 1), (3, 1, 1), (2, 2, 0), (0, 2, 2), (2, 2, 2)],
+                                                  [(0, 1, 2, 3, 4, 5)]), 1)
+    add("off_face_star_pentagon", "off", off([(0, 0, 0), (2, 0, 0), (0, 1, 0), (2, 1, 0), (1, 3, 0)],
+                                             [(0, 1, 2, 3, 4)]), 1)
     add("off_45_bytes_2e9", "off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", 1)
     add("off_header_4e8_faces", "off", "OFF\n3 400000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1)
     add("off_truncated_vertices", "off", "OFF\n8 12 0\n0 0 0\n1 0 0\n", 1)
