@@ -41,8 +41,7 @@ options=(-seed="$seed" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_lim
 echo "run_fuzzer.sh: $fuzzer ${options[*]} ($nseeds seeds)"
 start=$(date +%s)
 set +e
-UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
-  "$fuzzer" "${options[@]}" "$work/new" "$work/seeds" > "$work/log" 2>&1
+"$fuzzer" "${options[@]}" "$work/new" "$work/seeds" > "$work/log" 2>&1
 code=$?
 set -e
 elapsed=$(( $(date +%s) - start ))
