@@ -32,6 +32,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -377,9 +378,12 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& fail)
         next_value(p.count_type, v);
         const std::size_t left = format == 0 ? ascii.remaining_bytes() + 2 * (line.size() - token)
                                              : (text.size() - cursor) / std::size_t(std::abs(p.type) % 10);
-        if (!(v >= 0) || v != std::floor(v) || v > double(left))
-          throw Error(bad + e.name + " " + std::to_string(i) + " declares a list of " + std::to_string((long long)(v)) +
+        if (!(v >= 0) || v != std::floor(v) || v > double(left)) {
+          char count[32]; // as written: converting it to an integer type may overflow (1e308)
+          std::snprintf(count, sizeof count, "%.15g", v);
+          throw Error(bad + e.name + " " + std::to_string(i) + " declares a list of " + count +
                       " values, more than the rest of the file holds");
+        }
         std::vector<std::size_t> f(static_cast<std::size_t>(v));
         for (std::size_t& x : f) {
           double idx;
