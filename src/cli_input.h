@@ -522,6 +522,11 @@ inline Mesh mesh_from_soup(Polygon_soup s, const std::string& what, bool quiet)
       std::vector<K::Point_3> corners;
       for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) corners.push_back(m.point(v));
       const K::Vector_3 normal = PMP::compute_face_normal(f, m);
+      // (coordinates near 1e308 overflow it: the exact predicates would then convert an
+      // infinity or a NaN, and GMP raise SIGFPE)
+      if (!std::isfinite(normal.x()) || !std::isfinite(normal.y()) || !std::isfinite(normal.z()))
+        throw Error(what + " has a face of " + std::to_string(corners.size()) +
+                    " vertices whose plane overflows double (coordinates too large): it cannot be triangulated");
       if (normal == CGAL::NULL_VECTOR ||
           !CGAL::is_simple_2(corners.begin(), corners.end(), CGAL::Projection_traits_3<K>(normal)))
         throw Error(what + " has a face of " + std::to_string(corners.size()) +

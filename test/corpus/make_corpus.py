@@ -198,6 +198,9 @@ def corpus():
                                                   [(0, 1, 2, 3, 4, 5)]), 1)
     add("off_face_star_pentagon", "off", off([(0, 0, 0), (2, 0, 0), (0, 1, 0), (2, 1, 0), (1, 3, 0)],
                                              [(0, 1, 2, 3, 4)]), 1)
+    # a quad whose plane overflows double: SIGFPE in GMP (the readers' fuzzer)
+    add("off_face_quad_1e308", "off", off([(0, 0, 0), (1e308, 0, 0), (1e308, 1e308, 0), (0, 1e308, 0)],
+                                          [(0, 1, 2, 3)]), 1)
     add("off_45_bytes_2e9", "off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", 1)
     add("off_header_4e8_faces", "off", "OFF\n3 400000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1)
     add("off_truncated_vertices", "off", "OFF\n8 12 0\n0 0 0\n1 0 0\n", 1)
