@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Projection_traits_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -537,7 +538,11 @@ inline Mesh mesh_from_soup(Polygon_soup s, const std::string& what, bool quiet)
       throw Error(what + " has faces that cannot be triangulated");
     note(what + ": triangulated " + std::to_string(polygons) + " non-triangle faces", quiet);
   }
-  if (CGAL::is_closed(m)) {
+  // CGAL's orient_to_bound_a_volume needs a mesh that does not intersect itself: on one that
+  // does, its ray casts can loop for ever (found by the readers' fuzzer). Such a mesh, or one
+  // whose components touch, is left as it is for the library's solid checks, which refuse
+  // crossings and wrongly oriented components.
+  if (CGAL::is_closed(m) && !PMP::does_self_intersect(m)) {
     // CGAL's does_bound_a_volume() accepts either global orientation: orient, then count
     // the faces whose vertex cycle changed.
     std::vector<std::array<Mesh::Vertex_index, 3>> before;
