@@ -201,6 +201,16 @@ def corpus():
     # a quad whose plane overflows double: SIGFPE in GMP (the readers' fuzzer)
     add("off_face_quad_1e308", "off", off([(0, 0, 0), (1e308, 0, 0), (1e308, 1e308, 0), (0, 1e308, 0)],
                                           [(0, 1, 2, 3)]), 1)
+    # two crossing cubes, closed: CGAL 5.5's orient_to_bound_a_volume looped for ever in its ray
+    # casts (the readers' fuzzer, verbatim)
+    add("off_crossing_cubes_orient_loop", "off", (
+        'OFF\n16 24 0\n0.0 0.0 0.0\n1.0 0.0 0.00\n.0 1.5 0.0\n1.0 1.0 0.0\n'
+        '0.0 0.0 1.0\n0.0 0.0 1.0\n1.0 1.0 1.0\n1.0 1.0 1.0\n0.0 0.0 0.0\n'
+        '1.0 0.0 0.0\n0.0 1.0 0.0\n1.0 1.0 0.0\n0.0 0.0 1.0\n1.0 0.0 1.0\n'
+        '0.0 0.0 1.0\n1.0 1.0 1.0\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n'
+        '3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n3 8 10 11\n'
+        '3 8 11 9\n3 12 13 15\n3 12 15 14\n3 8 9 13\n3 8 13 12\n3 10 14 15\n'
+        '3 10 15 11\n3 8 12 14\n3 8 14 10\n3 9 11 15\n3 9 15 13\n'), 1)
     add("off_45_bytes_2e9", "off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", 1)
     add("off_header_4e8_faces", "off", "OFF\n3 400000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1)
     add("off_truncated_vertices", "off", "OFF\n8 12 0\n0 0 0\n1 0 0\n", 1)
