@@ -39,6 +39,7 @@ options=(-seed="$seed" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_lim
          -max_len=16384 -dict="$root/test/fuzz/readers.dict" -print_final_stats=1
          -artifact_prefix="$work/artifacts/")
 echo "run_fuzzer.sh: $fuzzer ${options[*]} ($nseeds seeds)"
+commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?')
 start=$(date +%s)
 set +e
 "$fuzzer" "${options[@]}" "$work/new" "$work/seeds" > "$work/log" 2>&1
@@ -64,7 +65,7 @@ if [ -n "$results" ]; then
   {
     echo "# Readers' fuzzer: one run"
     echo
-    echo "\`test/fuzz/run_fuzzer.sh $seconds\`, $(date -u +%Y-%m-%d), commit $(git -C "$root" rev-parse --short HEAD)," \
+    echo "\`test/fuzz/run_fuzzer.sh $seconds\`, $(date -u +%Y-%m-%d), commit $commit, seed $seed," \
          "$(nproc) cores shared with other work, clang $(clang++ -dumpversion 2>/dev/null || echo '?')," \
          "-fsanitize=fuzzer,address,undefined -O1. Target: test/fuzz/fuzz_readers.cpp (readers of" \
          "src/cli_input.h, mesh_from_soup, the library's make_mesh_data with the solid checks)."
