@@ -47,15 +47,16 @@ code=$?
 set -e
 elapsed=$(( $(date +%s) - start ))
 
-# libFuzzer's last status line ("#N DONE cov: C ft: F corp: ...") and its final stats
+# libFuzzer's last status line ("#N DONE cov: C ft: F corp: ...") and its final stats (printed
+# twice after a crash)
 last=$(grep -E '^#[0-9]+' "$work/log" | tail -1 || true)
 cov=$(sed -nE 's/.* cov: ([0-9]+).*/\1/p' <<< "$last")
 ft=$(sed -nE 's/.* ft: ([0-9]+).*/\1/p' <<< "$last")
 corp=$(sed -nE 's/.* corp: ([0-9]+\/[0-9]+[a-zA-Z]*).*/\1/p' <<< "$last")
-execs=$(sed -nE 's/^stat::number_of_executed_units: ([0-9]+)/\1/p' "$work/log")
-rate=$(sed -nE 's/^stat::average_exec_per_sec: +([0-9]+)/\1/p' "$work/log")
-newunits=$(sed -nE 's/^stat::new_units_added: +([0-9]+)/\1/p' "$work/log")
-rss=$(sed -nE 's/^stat::peak_rss_mb: +([0-9]+)/\1/p' "$work/log")
+execs=$(sed -nE 's/^stat::number_of_executed_units: ([0-9]+)/\1/p' "$work/log" | tail -1)
+rate=$(sed -nE 's/^stat::average_exec_per_sec: +([0-9]+)/\1/p' "$work/log" | tail -1)
+newunits=$(sed -nE 's/^stat::new_units_added: +([0-9]+)/\1/p' "$work/log" | tail -1)
+rss=$(sed -nE 's/^stat::peak_rss_mb: +([0-9]+)/\1/p' "$work/log" | tail -1)
 artifacts=$(ls "$work/artifacts" | wc -l)
 echo "executions: ${execs:-?} in ${elapsed} s (${rate:-?}/s); cov: ${cov:-?} ft: ${ft:-?} corpus: ${corp:-?}" \
      "(new units: ${newunits:-?}); peak RSS ${rss:-?} MB; findings: $artifacts; exit $code"
