@@ -16,11 +16,15 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/STL.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -29,6 +33,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -376,9 +381,12 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& fail)
         next_value(p.count_type, v);
         const std::size_t left = format == 0 ? ascii.remaining_bytes() + 2 * (line.size() - token)
                                              : (text.size() - cursor) / std::size_t(std::abs(p.type) % 10);
-        if (!(v >= 0) || v != std::floor(v) || v > double(left))
-          throw Error(bad + e.name + " " + std::to_string(i) + " declares a list of " + std::to_string((long long)(v)) +
+        if (!(v >= 0) || v != std::floor(v) || v > double(left)) {
+          char count[32]; // as written: converting it to an integer type may overflow (1e308)
+          std::snprintf(count, sizeof count, "%.15g", v);
+          throw Error(bad + e.name + " " + std::to_string(i) + " declares a list of " + count +
                       " values, more than the rest of the file holds");
+        }
         std::vector<std::size_t> f(static_cast<std::size_t>(v));
         for (std::size_t& x : f) {
           double idx;
@@ -453,19 +461,11 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& what, con
 
 } // namespace input_internal
 
-/// Reads a polygon soup from an .off, .ply, .obj or .stl file, checked (see the file comment).
-inline Polygon_soup read_soup(const std::string& path, const std::string& what)
+/// The checked polygon soup (see the file comment) of a file's contents `text` in the format
+/// `ext` names: "off", "ply", "stl" or "obj" (any other is read as OBJ).
+inline Polygon_soup parse_soup(std::string_view text, const std::string& ext, const std::string& what)
 {
-  namespace fs = std::filesystem;
   namespace in = input_internal;
-  const std::string ext = extension(path);
-  if (ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-    throw Error("cannot read " + what + ": unknown format '." + ext + "' (use .off, .obj, .ply or .stl)");
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw Error("cannot read " + what + ": no such file or not readable");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error("cannot read " + what + ": no such file or not readable");
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   const std::string fail = "cannot read " + what + ": ";
   Polygon_soup s = ext == "off" ? in::read_off(text, fail)
          : ext == "ply" ? in::read_ply(text, fail)
@@ -579,16 +579,29 @@ std::size_t split_non_manifold_edges(std::vector<Point>& points, std::vector<std
   return split;
 }
 
-/// Reads a mesh (OFF, OBJ, PLY, STL) through a checked polygon soup (read_soup). A valid
-/// mesh is built as it is; only a soup that is not one is repaired (CGAL's PMP: duplicated
-/// points merged, non-manifold edges and vertices split, orientation made consistent).
-/// (Repairing valid input would merge the coincident vertices of solids that touch along
-/// faces and then drop the coincident faces, opening the mesh.) Non-triangle faces are
-/// triangulated and closed meshes oriented to bound a volume, with a note.
-inline Mesh read_mesh(const std::string& path, const std::string& name, bool quiet)
+/// Reads a polygon soup from an .off, .ply, .obj or .stl file, checked (see the file comment).
+inline Polygon_soup read_soup(const std::string& path, const std::string& what)
 {
-  const std::string what = name + " ('" + path + "')";
-  Polygon_soup s = read_soup(path, what);
+  namespace fs = std::filesystem;
+  const std::string ext = extension(path);
+  if (ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+    throw Error("cannot read " + what + ": unknown format '." + ext + "' (use .off, .obj, .ply or .stl)");
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw Error("cannot read " + what + ": no such file or not readable");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw Error("cannot read " + what + ": no such file or not readable");
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  return parse_soup(text, ext, what);
+}
+
+/// The mesh of a checked polygon soup (parse_soup). A valid mesh is built as it is; only a
+/// soup that is not one is repaired (CGAL's PMP: duplicated points merged, non-manifold
+/// edges and vertices split, orientation made consistent). (Repairing valid input would merge
+/// the coincident vertices of solids that touch along faces and then drop the coincident
+/// faces, opening the mesh.) Non-triangle faces are triangulated and closed meshes oriented
+/// to bound a volume, with a note.
+inline Mesh mesh_from_soup(Polygon_soup s, const std::string& what, bool quiet)
+{
   if (s.polygons.empty()) throw Error(what + " has no faces");
   for (const auto& p : s.points)
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
@@ -611,11 +624,34 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
   std::size_t polygons = 0;
   for (auto f : m.faces()) polygons += (m.degree(f) != 3);
   if (polygons > 0) {
+    // CGAL 5.5's triangulate_faces (its 2D constrained triangulation in the plane of the face's
+    // normal) corrupts the mesh on a face that is not a simple polygon in that plane: a face
+    // cycle with no end, which hangs every later stage. Such a face is refused first.
+    for (auto f : m.faces()) {
+      if (m.degree(f) == 3) continue;
+      std::vector<K::Point_3> corners;
+      for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) corners.push_back(m.point(v));
+      const K::Vector_3 normal = PMP::compute_face_normal(f, m);
+      // (coordinates near 1e308 overflow it: the exact predicates would then convert an
+      // infinity or a NaN, and GMP raise SIGFPE)
+      if (!std::isfinite(normal.x()) || !std::isfinite(normal.y()) || !std::isfinite(normal.z()))
+        throw Error(what + " has a face of " + std::to_string(corners.size()) +
+                    " vertices whose plane overflows double (coordinates too large): it cannot be triangulated");
+      if (normal == CGAL::NULL_VECTOR ||
+          !CGAL::is_simple_2(corners.begin(), corners.end(), CGAL::Projection_traits_3<K>(normal)))
+        throw Error(what + " has a face of " + std::to_string(corners.size()) +
+                    " vertices that is not a simple polygon (no area, or edges that cross, in its plane):"
+                    " it cannot be triangulated");
+    }
     if (!PMP::triangulate_faces(m))
       throw Error(what + " has faces that cannot be triangulated");
     note(what + ": triangulated " + std::to_string(polygons) + " non-triangle faces", quiet);
   }
-  if (CGAL::is_closed(m)) {
+  // CGAL's orient_to_bound_a_volume needs a mesh that does not intersect itself: on one that
+  // does, its ray casts can loop for ever (found by the readers' fuzzer). Such a mesh, or one
+  // whose components touch, is left as it is for the library's solid checks, which refuse
+  // crossings and wrongly oriented components.
+  if (CGAL::is_closed(m) && !PMP::does_self_intersect(m)) {
     // CGAL's does_bound_a_volume() accepts either global orientation: orient, then count
     // the faces whose vertex cycle changed.
     std::vector<std::array<Mesh::Vertex_index, 3>> before;
@@ -636,6 +672,14 @@ inline Mesh read_mesh(const std::string& path, const std::string& name, bool qui
              std::to_string(m.number_of_faces()) + " faces to bound its volume", quiet);
   }
   return m;
+}
+
+/// Reads a mesh (OFF, OBJ, PLY, STL) through a checked polygon soup: read_soup, then
+/// mesh_from_soup.
+inline Mesh read_mesh(const std::string& path, const std::string& name, bool quiet)
+{
+  const std::string what = name + " ('" + path + "')";
+  return mesh_from_soup(read_soup(path, what), what, quiet);
 }
 
 } // namespace pmsum_cli

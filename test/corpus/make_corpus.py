@@ -9,7 +9,14 @@ and fails on any: wrong exit code or message class, crash (killed by a signal or
 hang (> 30 s), peak RSS over 2 GiB (address space capped at 4 GiB), output or temporary file
 left behind after a failure, input file changed on disk.
 
-    make_corpus.py PMSUM [--keep DIR] [--list]
+    make_corpus.py PMSUM [--keep DIR] [--list] [--no-as-limit]
+    make_corpus.py --seeds DIR
+
+--keep DIR keeps the inputs and the work files in DIR. --no-as-limit leaves the address
+space uncapped (AddressSanitizer reserves terabytes of it: the sanitized tests pass it; their
+peak RSS is still checked). --seeds DIR writes each input file, without running anything, as a
+seed of the readers' fuzzer (test/fuzz/fuzz_readers.cpp): one byte naming the format ('0' OFF,
+'1' PLY, '2' STL, '3' OBJ), then the file.
 """
 
 import collections
@@ -195,6 +202,25 @@ def corpus():
                                              (1, 3, 7, 5)]), 0)
     # a repeated vertex closing a polygon, a duplicated face: not a mesh, repaired (CGAL's PMP)
     add("off_face_pentagon_repeat", "off", off(CUBE, [(0, 2, 3, 1, 0)] + CUBE_F[2:]), 0)
+    # a hexagon that crosses itself in its plane: CGAL 5.5's triangulate_faces made an endless
+    # face cycle of it (a hang; found by the readers' fuzzer); a planar star pentagon
+    add("off_face_not_simple_hexagon", "off", off([(1, 1, 1), (3, 3, 1), (3, 1, 1), (2, 2, 0), (0, 2, 2), (2, 2, 2)],
+                                                  [(0, 1, 2, 3, 4, 5)]), 1)
+    add("off_face_star_pentagon", "off", off([(0, 0, 0), (2, 0, 0), (0, 1, 0), (2, 1, 0), (1, 3, 0)],
+                                             [(0, 1, 2, 3, 4)]), 1)
+    # a quad whose plane overflows double: SIGFPE in GMP (the readers' fuzzer)
+    add("off_face_quad_1e308", "off", off([(0, 0, 0), (1e308, 0, 0), (1e308, 1e308, 0), (0, 1e308, 0)],
+                                          [(0, 1, 2, 3)]), 1)
+    # two crossing cubes, closed: CGAL 5.5's orient_to_bound_a_volume looped for ever in its ray
+    # casts (the readers' fuzzer, verbatim)
+    add("off_crossing_cubes_orient_loop", "off", (
+        'OFF\n16 24 0\n0.0 0.0 0.0\n1.0 0.0 0.00\n.0 1.5 0.0\n1.0 1.0 0.0\n'
+        '0.0 0.0 1.0\n0.0 0.0 1.0\n1.0 1.0 1.0\n1.0 1.0 1.0\n0.0 0.0 0.0\n'
+        '1.0 0.0 0.0\n0.0 1.0 0.0\n1.0 1.0 0.0\n0.0 0.0 1.0\n1.0 0.0 1.0\n'
+        '0.0 0.0 1.0\n1.0 1.0 1.0\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n'
+        '3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n3 8 10 11\n'
+        '3 8 11 9\n3 12 13 15\n3 12 15 14\n3 8 9 13\n3 8 13 12\n3 10 14 15\n'
+        '3 10 15 11\n3 8 12 14\n3 8 14 10\n3 9 11 15\n3 9 15 13\n'), 1)
     add("off_45_bytes_2e9", "off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", 1)
     add("off_header_4e8_faces", "off", "OFF\n3 400000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 1)
     add("off_truncated_vertices", "off", "OFF\n8 12 0\n0 0 0\n1 0 0\n", 1)
@@ -266,6 +292,9 @@ def corpus():
     add("plya_index_negative", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1, -1)]), 1)
     add("plya_index_float", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1, 2.5)]), 1)
     add("plya_list_huge", "ply", ply_ascii(CUBE, CUBE_F).replace(b"\n3 1 3 7", b"\n2000000000 1 3 7"), 1)
+    # a list count that overflows an integer type (UBSan in the error message; the readers' fuzzer)
+    add("plya_list_1e308", "ply", ply_ascii(CUBE, CUBE_F).replace(b"\n3 1 3 7", b"\n1e308 1 3 7"), 1)
+    add("plya_list_nan", "ply", ply_ascii(CUBE, CUBE_F).replace(b"\n3 1 3 7", b"\nnan 1 3 7"), 1)
     add("plya_list_two", "ply", ply_ascii(CUBE, CUBE_F[:-1] + [(0, 1)]), 1)
     add("plya_vertex_text", "ply", ply_ascii(CUBE, CUBE_F).replace(b"end_header\n0.0", b"end_header\nzero"), 1)
     add("plya_vertex_nan", "ply", ply_ascii(CUBE, CUBE_F).replace(b"end_header\n0.0", b"end_header\nnan"), 1)
@@ -417,10 +446,11 @@ def command_cases():
     return C
 
 
-def run(pmsum, args, cwd):
+def run(pmsum, args, cwd, as_limit=True):
     """(exit code or -signal, stdout, stderr, seconds, peak RSS in kB, timed out)."""
     def limits():
-        resource.setrlimit(resource.RLIMIT_AS, (AS_LIMIT, AS_LIMIT))
+        if as_limit:
+            resource.setrlimit(resource.RLIMIT_AS, (AS_LIMIT, AS_LIMIT))
     start = time.monotonic()
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         p = subprocess.Popen([pmsum] + args, stdout=out, stderr=err, cwd=cwd, preexec_fn=limits)
@@ -447,10 +477,24 @@ def digest(path):
         return hashlib.sha256(f.read()).hexdigest()
 
 
-def check(pmsum, args, code, inputs, out_dir, work):
+FUZZ_FORMAT = {"off": b"0", "ply": b"1", "stl": b"2", "obj": b"3"}
+
+
+def write_seeds(directory):
+    os.makedirs(directory, exist_ok=True)
+    files = [("cube", "off", off(CUBE, CUBE_F)), ("tet", "off", off(TET, TET_F))]
+    files += [(name, ext, content) for name, ext, content, _, _ in corpus() if ext is not None]
+    for name, ext, content in files:
+        with open(os.path.join(directory, name), "wb") as f:
+            f.write(FUZZ_FORMAT[ext] + (content if isinstance(content, bytes) else content.encode()))
+    print("%d seeds written to %s" % (len(files), directory))
+    return 0
+
+
+def check(pmsum, args, code, inputs, out_dir, work, as_limit=True):
     """Runs one case; (outcome, problems, stderr)."""
     before = {p: digest(p) for p in inputs if os.path.isfile(p)}
-    got, stdout, stderr, seconds, rss, timed_out = run(pmsum, args, work)
+    got, stdout, stderr, seconds, rss, timed_out = run(pmsum, args, work, as_limit)
     outcome = ("hung" if timed_out else "crashed" if got < 0 or got >= 128 else
                "accepted" if got == 0 else "refused (exit %d)" % got)
     problems = []
@@ -487,7 +531,10 @@ def main():
     if len(sys.argv) < 2:
         print(__doc__)
         return 2
+    if sys.argv[1] == "--seeds":
+        return write_seeds(sys.argv[2])
     pmsum = os.path.abspath(sys.argv[1])
+    as_limit = "--no-as-limit" not in sys.argv
     cases = corpus()
     if "--list" in sys.argv:
         for name, ext, _, code, _ in cases:
@@ -537,13 +584,13 @@ def main():
             if extra[:1] == ["-d"] and len(extra) == 1:
                 extra = ["-o", out, "-d"]
             args = ["sum", cube, tet] + extra
-        outcome, problems, stderr = check(pmsum, args, code, [file, cube, tet], out_dir, work)
+        outcome, problems, stderr = check(pmsum, args, code, [file, cube, tet], out_dir, work, as_limit)
         # valid inputs: one thread and three give the same bytes
         if ext is not None and code == 0 and not problems:
             first = output_bytes()
             for threads in ("1", "3"):
                 clear(out_dir)
-                o2, p2, _ = check(pmsum, args + ["--threads", threads], 0, [file], out_dir, work)
+                o2, p2, _ = check(pmsum, args + ["--threads", threads], 0, [file], out_dir, work, as_limit)
                 problems += p2
                 if not p2 and output_bytes() != first:
                     problems.append("--threads %s: output differs" % threads)
@@ -557,7 +604,7 @@ def main():
         file = os.path.join(work, name + "." + ext)
         for command, make in COMMANDS.items():
             args = [a.replace("PATH", path).replace("TET", tet) for a in make(file, out)]
-            record("%s (%s)" % (name, command), *check(pmsum, args, code, [file, tet, path], out_dir, work))
+            record("%s (%s)" % (name, command), *check(pmsum, args, code, [file, tet, path], out_dir, work, as_limit))
 
     # 3. options and side files of the other commands
     truncated = None
@@ -569,7 +616,7 @@ def main():
             if text == "TRUNCATED":
                 if truncated is None:
                     ref = os.path.join(work, "ref.nef3")
-                    run(pmsum, ["validate", cube, tet, "-d", "0.5", "--save-exact", ref], work)
+                    run(pmsum, ["validate", cube, tet, "-d", "0.5", "--save-exact", ref], work, as_limit)
                     with open(ref, "rb") as f:
                         data = f.read()
                     truncated = data[: len(data) // 2]
@@ -579,7 +626,7 @@ def main():
                 content = text.encode("latin-1")
             with open(args[i - 1], "wb") as f:
                 f.write(content)
-        record(name, *check(pmsum, args, code, [cube, tet, path], out_dir, work))
+        record(name, *check(pmsum, args, code, [cube, tet, path], out_dir, work, as_limit))
 
     os.rmdir(out_dir)
     if not keep:
