@@ -579,6 +579,20 @@ std::size_t split_non_manifold_edges(std::vector<Point>& points, std::vector<std
   return split;
 }
 
+/// Whether two corners of a face fall on one point when projected along `normal`, as the 2D
+/// triangulation of CGAL's triangulate_faces sees them (its own projected predicates; is_simple_2
+/// compares the 3D points): it would then insert a constraint from a vertex to itself (a
+/// precondition; undefined behaviour in Release). Found by the readers' fuzzer.
+inline bool corners_meet_in_projection(std::vector<K::Point_3> corners, const K::Vector_3& normal)
+{
+  const CGAL::Projection_traits_3<K> traits(normal);
+  const auto less = traits.less_xy_2_object();
+  std::sort(corners.begin(), corners.end(), less);
+  for (std::size_t i = 1; i < corners.size(); ++i)
+    if (!less(corners[i - 1], corners[i])) return true;
+  return false;
+}
+
 /// Reads a polygon soup from an .off, .ply, .obj or .stl file, checked (see the file comment).
 inline Polygon_soup read_soup(const std::string& path, const std::string& what)
 {
@@ -638,7 +652,8 @@ inline Mesh mesh_from_soup(Polygon_soup s, const std::string& what, bool quiet)
         throw Error(what + " has a face of " + std::to_string(corners.size()) +
                     " vertices whose plane overflows double (coordinates too large): it cannot be triangulated");
       if (normal == CGAL::NULL_VECTOR ||
-          !CGAL::is_simple_2(corners.begin(), corners.end(), CGAL::Projection_traits_3<K>(normal)))
+          !CGAL::is_simple_2(corners.begin(), corners.end(), CGAL::Projection_traits_3<K>(normal)) ||
+          corners_meet_in_projection(corners, normal))
         throw Error(what + " has a face of " + std::to_string(corners.size()) +
                     " vertices that is not a simple polygon (no area, or edges that cross, in its plane):"
                     " it cannot be triangulated");

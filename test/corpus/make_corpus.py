@@ -213,6 +213,10 @@ def corpus():
                                           [(0, 1, 2, 3)]), 1)
     # two crossing cubes, closed: CGAL 5.5's orient_to_bound_a_volume looped for ever in its ray
     # casts (the readers' fuzzer, verbatim)
+    # an OBJ whose repaired soup has a pentagon with two corners on one point of the plane of its
+    # normal: CGAL 5.5's triangulate_faces inserted a constraint from a vertex to itself (UBSan;
+    # the readers' fuzzer, verbatim)
+    add("obj_pentagon_corners_meet_in_projection", "obj", b'v 0.0 0.0 0.0\x8av 1.0 0.0 0.0\nv 1.0 0.0 0.0\nv 0.0 1.0 0.0\nv 1.0 1.1 6/1/10.0\nv 0.0 0.0 1.0\nv 1.0 0.0 1.0\nv 0.0 1.0 1.0\nv 1.0 1.0 1.0\nf 1/1/1 3/1/1 4/1/1\nf 1/1/1 4/1/1 2/1/1\nf 5/1/1 6/1/1 8/1/1\nf 5/1/1 8/1/1 7/1/\xcf\xf5\x99\xe31/1/1 2/1/1 6/1/1\nf 1/1/1 6/1/1 5/1/1\nf 3/1/1 7/1/1 8/1/1\nf 3/1/1 8/1/1 4/1/1\nf 1/1/1 5/1/1 7/1/1\nf 1/1/1 5/1/1 6/1/1 8/1/1\nf 5/1/1 8/1/1 7/1/1\nf 1/1/1 2/1/1 6/1/1\xff\xff\xff\xff/1/1 6/1/1 5/1/1e308/1/1 7/1/1 8/1/1\nf 3/1/1 8/1/1vertex  4/1/1 6/1/1\nvt 0 0\nvn 0 0.0 0.0\nv 0.0 1.0 0.0\nv 1.0 1.0 0.0\nv 0.0 0.0 1.0\nv 1.0 0.0 1.0\nv 0.0 1.0 1.0\nv 1.0 1.0 1.0\nf 1/1/1 3/1/1 4/1/1\nf 1/1/1 4/1/1 2/1/1\nf 5/1/1 6/1/1 8/1/1\nf 5/1/1 8/1/1 7/1/1\nf 1/1/1 2/1/1 6/1/1\nf 1/1/1 6/1/1 5/1/1\nf 3/1/1 7/1/1 8/1/1\nf 3/1/1 8/1/1 4/1/1\nf 1/1/1 5/1/1 7/1/1\nf 1/1/1 7/1/1 3/1/1\nf 2/1/1 4/1/1 8/1/1\nf 2/1/1 8/1/1 6/1/1\nvt 0 0\nvn 0 0 1\n', 1)
     add("off_crossing_cubes_orient_loop", "off", (
         'OFF\n16 24 0\n0.0 0.0 0.0\n1.0 0.0 0.00\n.0 1.5 0.0\n1.0 1.0 0.0\n'
         '0.0 0.0 1.0\n0.0 0.0 1.0\n1.0 1.0 1.0\n1.0 1.0 1.0\n0.0 0.0 0.0\n'
