@@ -228,6 +228,8 @@ const std::string sum_options_help = input_options_help +
   "  --no-octree-filter     CD-test candidates in cells certified interior too (same output, slower)\n"
   "  --all-candidates       every boundary candidate (the paper's output), not the default\n"
   "                         (d/2, d)-net: many times more points, and slower\n"
+  "  --no-trim-points       no points on the trim curves of the convolution facets: faster,\n"
+  "                         but passages narrower than the sample spacing may be uncovered\n"
   "  --levels D1,D2,...     coarse to fine: first the larger covering distances D1 > D2 > ... > D\n"
   "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
   "                         K to OUT with .levelK before the extension (validate: the last)\n"
@@ -235,7 +237,7 @@ const std::string sum_options_help = input_options_help +
   "  --force                run even if the estimated output exceeds the available memory\n";
 const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
 const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter", "--all-candidates",
-                                            "--force", "--quiet", "--help", "-h"};
+                                            "--no-trim-points", "--force", "--quiet", "--help", "-h"};
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
 
@@ -253,7 +255,7 @@ struct Sum_input
   std::string p_path, q_path;
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
-  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, force = false, quiet = false;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, force = false, quiet = false;
   int threads = 0; // 0: all cores
   std::vector<double> coarser_d; // --levels: coarser covering distances, coarse to fine (absolute)
 };
@@ -273,6 +275,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.cd_filter = !args.flag("--no-cd-filter");
   in.octree_filter = !args.flag("--no-octree-filter");
   in.covering_net = !args.flag("--all-candidates");
+  in.trim_points = !args.flag("--no-trim-points");
   in.force = args.flag("--force");
   if (args.has("--threads")) {
     const double t = args.number("--threads");
@@ -342,6 +345,7 @@ inline std::vector<Record> compute_sum(
                     .use_cd_filter(in.cd_filter)
                     .use_octree_filter(in.octree_filter)
                     .use_covering_net(in.covering_net)
+                    .use_trim_points(in.trim_points)
                     .negate_first_mesh(in.negate)
                     .statistics(stats)
                     .maximum_number_of_candidates(limit)
@@ -396,7 +400,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
   jq.str("file", in.q_path).integer("vertices", in.Q.number_of_vertices())
     .integer("faces", in.Q.number_of_faces()).integer("samples", stats.samples_q);
   filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter).boolean("octree", in.octree_filter)
-    .boolean("covering_net", in.covering_net);
+    .boolean("covering_net", in.covering_net).boolean("trim_points", in.trim_points);
   Json j;
   const unsigned cores = std::thread::hardware_concurrency();
   j.object("p", jp).object("q", jq).integer("threads", in.threads ? std::size_t(in.threads) : std::size_t(cores ? cores : 1))
@@ -407,7 +411,9 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("candidates_certified", stats.candidates_certified).integer("candidates_reused", stats.candidates_reused)
     .integer("candidates_covered", stats.candidates_covered)
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
-    .integer("containment_tests", stats.containment_tests).integer("output_points", stats.output_points);
+    .integer("containment_tests", stats.containment_tests).integer("corner_tests", stats.corner_tests)
+    .integer("trim_segments", stats.trim_segments).integer("trim_points", stats.trim_points)
+    .integer("output_points", stats.output_points);
   return j;
 }
 

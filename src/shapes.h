@@ -166,6 +166,29 @@ inline Soup blocks(int n, double h)
 }
 
 /// Converts a soup to a face graph (Surface_mesh, Polyhedron_3, ...).
+/// A 4 x 4 x 4 block with a square tunnel 1 x 1 along z through its middle (four boxes that
+/// touch along faces).
+inline Soup tunnel_block()
+{
+  Soup s = box({0, 0, 0}, {1.5, 4, 4});
+  s.append(box({2.5, 0, 0}, {4, 4, 4}));
+  s.append(box({1.5, 0, 0}, {2.5, 1.5, 4}));
+  s.append(box({1.5, 2.5, 0}, {2.5, 4, 4}));
+  return s;
+}
+
+/// A cube of the given side centred at the origin, turned about z by the angle of cosine c
+/// and sine sn (c^2 + sn^2 = 1): its extent along x and y is side (c + sn).
+inline Soup turned_cube(double side, double c, double sn)
+{
+  std::vector<Point> pts;
+  const double h = side / 2;
+  for (double z : {-h, h})
+    for (double a : {-h, h})
+      for (double b : {-h, h}) pts.push_back({c * a - sn * b, sn * a + c * b, z});
+  return convex_hull(pts);
+}
+
 template <class Mesh>
 Mesh to_mesh(const Soup& s)
 {

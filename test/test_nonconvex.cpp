@@ -102,7 +102,7 @@ TEST_CASE("without the CD filter the output is every candidate", "[filters]")
   const Result no_cd = run(P, Q, 0.2, CGAL::parameters::use_cd_filter(false));
   CHECK(no_cd.points.size() == with_cd.stats.candidates);
   CHECK(no_cd.stats.cd_queries == 0);
-  CHECK(coverage_distance(with_cd.points, no_cd.points) == 0);
+  CHECK(coverage_distance(lattice_points(with_cd.records), no_cd.points) == 0); // trim points are not candidates
   const Reference ref(P, Q);
   CHECK(exactness_failures(no_cd, ref) > 0); // inner points are there
 }
@@ -252,10 +252,11 @@ TEST_CASE("coarse to fine: every level exact and covering, coarser points reused
       CHECK(exactness_failures(r, ref) == 0);
       CHECK(coverage_distance(ref.boundary_samples(ds[k] / 8), r.points) < ds[k]);
       CHECK(stats[k].output_points == levels[k].size());
-      if (net) CHECK(CGAL::Pmsum::measure_point_spacing(r.points) >= ds[k] / 2 * (1 - 1e-9));
+      if (net) CHECK(CGAL::Pmsum::measure_point_spacing(lattice_points(levels[k])) >= ds[k] / 2 * (1 - 1e-9));
       std::set<std::tuple<double, double, double>> here;
-      for (const auto& p : r.points) here.insert({p.x(), p.y(), p.z()});
-      // Every coarser point is a point of the finer level again.
+      for (const auto& p : lattice_points(levels[k])) here.insert({p.x(), p.y(), p.z()});
+      // Every coarser lattice point is a point of the finer level again (trim points are
+      // searched again on the finer lattice).
       for (const auto& p : previous) CHECK(here.count(p) == 1);
       // The coarser decisions are reused: without the net, every coarser candidate's but
       // those certified interior (they are certified again).

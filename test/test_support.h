@@ -25,6 +25,25 @@ namespace pmsum_test {
 using Mesh = CGAL::Surface_mesh<IK::Point_3>;
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, IK>;
 
+/// Is the record a trim-curve point (between lattice samples)?
+inline bool is_trim_point(const Record& r) { return r.origin_p.rational_weights || r.origin_q.rational_weights; }
+
+/// The points of the records that are lattice sums (not trim points).
+inline std::vector<IK::Point_3> lattice_points(const std::vector<Record>& records)
+{
+  std::vector<IK::Point_3> r;
+  for (const Record& x : records)
+    if (!is_trim_point(x)) r.push_back(x.point);
+  return r;
+}
+
+inline std::vector<IK::Point_3> all_points(const std::vector<Record>& records)
+{
+  std::vector<IK::Point_3> r;
+  for (const Record& x : records) r.push_back(x.point);
+  return r;
+}
+
 struct Result
 {
   std::vector<Record> records;
@@ -64,11 +83,14 @@ std::pair<Result, Result> check_net_and_all(const Soup& P, const Soup& Q, double
                                             const NP& np = CGAL::parameters::use_normal_filter(true));
 
 /// The default output `net` against every boundary candidate `all` (use_covering_net(false)):
-/// a subset, no two points closer than d/2 (up to the rounding margin), and every boundary
-/// candidate closer than d/2 to one of its points.
-inline void check_covering_net(const std::vector<IK::Point_3>& net, const std::vector<IK::Point_3>& all, double d)
+/// its lattice points are boundary candidates, no two closer than d/2 (up to the rounding
+/// margin), and every boundary candidate is closer than d/2 to one of its points. (Trim
+/// points are not lattice sums, and may be closer to other points.)
+inline void check_covering_net(const std::vector<Record>& net_records, const std::vector<Record>& all_records, double d)
 {
-  INFO("net " << net.size() << " points of " << all.size() << " boundary candidates");
+  const std::vector<IK::Point_3> net = lattice_points(net_records), all = lattice_points(all_records);
+  INFO("net " << net.size() << " lattice points (of " << net_records.size() << ") and " << all.size()
+              << " boundary candidates");
   REQUIRE(!net.empty());
   std::set<std::tuple<double, double, double>> candidates;
   for (const auto& p : all) candidates.insert({p.x(), p.y(), p.z()});
@@ -78,7 +100,7 @@ inline void check_covering_net(const std::vector<IK::Point_3>& net, const std::v
   const double spacing = CGAL::Pmsum::measure_point_spacing(net);
   INFO("minimum spacing " << spacing / d << " d");
   CHECK(spacing >= d / 2 * (1 - 1e-9));
-  const double cover = coverage_distance(all, net);
+  const double cover = coverage_distance(all, all_points(net_records));
   INFO("boundary candidates within " << cover / d << " d of the net");
   CHECK(cover < d / 2);
 }
@@ -96,7 +118,7 @@ std::pair<Result, Result> check_net_and_all(const Soup& P, const Soup& Q, double
     INFO("coverage " << cover / d << " d");
     CHECK(cover < d);
   }
-  check_covering_net(r.first.points, r.second.points, d);
+  check_covering_net(r.first.records, r.second.records, d);
   return r;
 }
 

@@ -196,19 +196,50 @@ TEST_CASE("boxes on boxes under a non-round rotation: the default net is exact, 
   INFO("points " << o.points << ", shells " << o.shells << ", worst coverage " << o.worst << " d");
   CHECK(o.off_boundary == 0);
   CHECK(o.covered == o.shells);
-  std::vector<IK::Point_3> net, all;
+  std::vector<Record> net, all;
   CGAL::Pmsum::Statistics s_net, s_all;
-  for (auto [out, net_on, stats] : {std::tuple{&net, true, &s_net}, std::tuple{&all, false, &s_all}}) {
-    std::vector<Record> records;
-    CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records),
+  for (auto [out, net_on, stats] : {std::tuple{&net, true, &s_net}, std::tuple{&all, false, &s_all}})
+    CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(*out),
                               CGAL::parameters::use_covering_net(net_on).statistics(*stats));
-    for (const Record& r : records) out->push_back(r.point);
-  }
   REQUIRE(net.size() == o.points);
   check_covering_net(net, all, d);
   INFO("CD queries: " << s_net.cd_queries << " with the net, " << s_all.cd_queries << " without");
   CHECK(2 * s_net.cd_queries < s_all.cd_queries);
   CHECK(4 * net.size() < all.size());
+}
+
+TEST_CASE("narrow passages: exact and covered down to a passage of d/1000, turned and rotated", "[validation][narrow]")
+{
+  // The tunnel block + a cube turned about the tunnel's axis (cos 0.8, sin 0.6), sized so
+  // that the sum keeps a square passage of width w along the tunnel: its walls are visible
+  // strips of width w whose sides are trim curves, not lattice lines. Before the trim search
+  // the strip of width d/170 lay 13.8 d from every output point.
+  const double d = 0.04 * std::sqrt(3.) * 5; // 4% of about the sum's diagonal
+  for (const double w : {d, d / 10, d / 1000}) {
+    for (const bool turn : {false, true}) {
+      Soup block = tunnel_block(), cube = turned_cube((1 - w) / 1.4, 0.8, 0.6);
+      if (turn) { block = rotated(block); cube = rotated(cube); }
+      const Mesh P = to_mesh<Mesh>(block), Q = to_mesh<Mesh>(cube);
+      const Reference_nef ref(P, Q, false);
+      CGAL::Pmsum::Statistics stats;
+      std::vector<Record> records;
+      CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records), CGAL::parameters::statistics(stats));
+      const Outcome o = check(records, P, Q, d, ref);
+      INFO("passage " << w / d << " d" << (turn ? ", rotated" : "") << ": points " << o.points << ", trim points "
+                      << stats.trim_points << ", shells " << o.shells << ", worst coverage " << o.worst << " d");
+      CHECK(o.off_boundary == 0);
+      CHECK(o.covered == o.shells);
+      CHECK(o.worst < 1);
+      if (w < d / 5) CHECK(stats.trim_points > 0); // the passage's walls need them
+      if (w > d / 500 || turn) continue;
+      // Without the trim points, the narrowest passage's walls are far from every point.
+      records.clear();
+      CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records), CGAL::parameters::use_trim_points(false));
+      const Outcome without = check(records, P, Q, d, ref);
+      INFO("without trim points: worst coverage " << without.worst << " d");
+      CHECK(without.worst > 2);
+    }
+  }
 }
 
 #include <CGAL_pmsum/Penetration_depth.h>

@@ -11,9 +11,11 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <CGAL/Exact_rational.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 
 namespace CGAL {
@@ -36,6 +38,10 @@ struct Mesh_feature
   std::array<vertex_descriptor, 3> vertices{};
   std::array<int, 3> weights{};
   int denominator = 1;
+  /// Points on trim curves (between lattice samples, where a visible part of a convolution
+  /// facet ends): the exact barycentric weights over `vertices` (they sum to 1), used instead
+  /// of `weights / denominator`, which then hold the lattice sample the point was found from.
+  std::optional<std::array<CGAL::Exact_rational, 3>> rational_weights;
 };
 
 /// One point of the boundary of P + Q (or of -P + Q).
@@ -57,14 +63,14 @@ typename EK::Point_3 exact_sample(const Mesh_feature<PolygonMesh>& f, VertexPoin
   using FT = typename EK::FT;
   FT c[3] = {FT(0), FT(0), FT(0)};
   for (int i = 0; i < 3; ++i) {
-    if (f.weights[i] == 0) continue;
+    const FT w = f.rational_weights ? FT((*f.rational_weights)[i]) : FT(f.weights[i]) / FT(f.denominator);
+    if (CGAL::is_zero(w)) continue;
     const auto& p = get(vpm, f.vertices[i]);
-    c[0] += FT(f.weights[i]) * FT(CGAL::to_double(p.x()));
-    c[1] += FT(f.weights[i]) * FT(CGAL::to_double(p.y()));
-    c[2] += FT(f.weights[i]) * FT(CGAL::to_double(p.z()));
+    c[0] += w * FT(CGAL::to_double(p.x()));
+    c[1] += w * FT(CGAL::to_double(p.y()));
+    c[2] += w * FT(CGAL::to_double(p.z()));
   }
-  const FT den(f.denominator);
-  return typename EK::Point_3(c[0] / den, c[1] / den, c[2] / den);
+  return typename EK::Point_3(c[0], c[1], c[2]);
 }
 
 /// The exact point of a record in the exact kernel `EK` (for checks and exact

@@ -54,10 +54,9 @@ public:
     Statistics stats;
     internal::run_pipeline<ConcurrencyTag>(
       *pd.m_p, *pd.m_q, d, internal::Pipeline_options{}, stats,
-      [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction&) {
+      [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction&, const internal::Trim* trim) {
         double c[3];
-        for (int i = 0; i < 3; ++i)
-          c[i] = internal::sample_coordinate<double>(*pd.m_p, sp, i) + internal::sample_coordinate<double>(*pd.m_q, sq, i);
+        for (int i = 0; i < 3; ++i) c[i] = internal::sum_coordinate<double>(*pd.m_p, *pd.m_q, sp, sq, trim, i);
         pd.m_points.emplace_back(c[0], c[1], c[2]);
       },
       start);

@@ -25,6 +25,9 @@ struct Statistics
   std::size_t cd_queries = 0;               ///< collision tests (one per candidate and direction tried)
   std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests inside them
   std::size_t containment_tests = 0;        ///< exact point-in-solid tests inside them
+  std::size_t corner_tests = 0;             ///< CD tests of facet lattice points on the facets' edges (trim search)
+  std::size_t trim_segments = 0;            ///< lattice segments searched for trim-curve points
+  std::size_t trim_points = 0;              ///< output points on trim curves (between lattice points)
   std::size_t output_points = 0;            ///< the (d/2, d)-net, or every boundary candidate
   double seconds_setup = 0;                 ///< input checks, sampling resolutions, AABB trees
   double seconds_normal_filter = 0;

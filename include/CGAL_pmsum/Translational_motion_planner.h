@@ -31,8 +31,8 @@
 // general, and none relative to d either. The contact points cover C within d, so every
 // part of the free space's boundary wider than about d has nodes; a passage whose boundary
 // has nodes (the tested peg-in-hole and slot problems, with a gap smaller than d) is found
-// when the k-nearest-neighbour edges along it are free. A narrow passage whose walls carry no
-// sample (see the user manual's known limits), or two parts of the boundary farther apart
+// when the k-nearest-neighbour edges along it are free. An island of the contact space's
+// boundary without samples (see the user manual's known limits), or two parts of the boundary farther apart
 // than the k-th neighbour and joined only through open space, can make the roadmap miss a
 // path: the planner then reports that no path was found, which does not prove that none
 // exists. (The paper's star-shaped decomposition has the same limits.)
@@ -112,11 +112,11 @@ public:
     options.keep_vertex_sums = true;
     internal::run_pipeline<ConcurrencyTag>(
       *pl.m_minus_p, *pl.m_q, d, options, stats,
-      [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction& dir) {
+      [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction& dir,
+          const internal::Trim* trim) {
         Point x;
         for (int c = 0; c < 3; ++c)
-          x[c] = CGAL::to_double(internal::sample_coordinate<CGAL::Exact_rational>(*pl.m_minus_p, sp, c) +
-                                 internal::sample_coordinate<CGAL::Exact_rational>(*pl.m_q, sq, c));
+          x[c] = CGAL::to_double(internal::sum_coordinate<CGAL::Exact_rational>(*pl.m_minus_p, *pl.m_q, sp, sq, trim, c));
         contacts.emplace_back(x, unit(dir.vector<double>(*pl.m_minus_p, *pl.m_q)));
       },
       start);

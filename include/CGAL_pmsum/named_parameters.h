@@ -23,6 +23,7 @@ enum use_normal_filter_t { use_normal_filter };
 enum use_cd_filter_t { use_cd_filter };
 enum use_octree_filter_t { use_octree_filter };
 enum use_covering_net_t { use_covering_net };
+enum use_trim_points_t { use_trim_points };
 enum negate_first_mesh_t { negate_first_mesh };
 enum statistics_t { statistics };
 enum treat_as_surface_t { treat_as_surface };
@@ -75,6 +76,12 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<bool, internal_np::use_covering_net_t, Named_parameters>
   use_covering_net(bool b) const { return {b, *this}; }
 
+  /// Search the trim curves of the convolution facets for boundary points between lattice
+  /// points (default `true`): it covers the passages of the sum narrower than the sample
+  /// spacing (user manual, section 4). `false` is faster and may leave them uncovered.
+  Named_parameters<bool, internal_np::use_trim_points_t, Named_parameters>
+  use_trim_points(bool b) const { return {b, *this}; }
+
   /// Compute the boundary of (-P) + Q instead of P + Q (default `false`): the contact space
   /// of a robot P translating among obstacles Q.
   Named_parameters<bool, internal_np::negate_first_mesh_t, Named_parameters>
@@ -107,6 +114,10 @@ use_octree_filter(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal
 /// \copydoc CGAL::Pmsum::Named_parameters::use_covering_net
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_covering_net_t>
 use_covering_net(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_covering_net_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::use_trim_points
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_trim_points_t>
+use_trim_points(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_trim_points_t>(b); }
 
 /// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>

@@ -50,20 +50,25 @@ struct Accepts_record<OutputIterator, Record,
                       std::void_t<decltype(*std::declval<OutputIterator&>() = std::declval<const Record&>())>>
   : std::true_type {};
 
-/// Fills the public Mesh_feature of a sample.
+/// Fills the public Mesh_feature of a sample, or of a trim point's part: the point
+/// (1 - lambda) s + lambda `towards`, on feature `origin`.
 template <class PolygonMesh>
-Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptors<PolygonMesh>& desc)
+Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptors<PolygonMesh>& desc,
+                                          const Sample* towards = nullptr, const CGAL::Exact_rational* lambda = nullptr,
+                                          const Feature* origin = nullptr)
 {
   Mesh_feature<PolygonMesh> f;
-  f.dimension = s.origin.dimension;
-  if (f.dimension == 0) f.vertex = desc.vertices[s.origin.index];
-  else if (f.dimension == 1) f.halfedge = desc.edges[s.origin.index];
-  else f.face = desc.faces[s.origin.index];
+  const Feature o = origin ? *origin : s.origin;
+  f.dimension = o.dimension;
+  if (f.dimension == 0) f.vertex = desc.vertices[o.index];
+  else if (f.dimension == 1) f.halfedge = desc.edges[o.index];
+  else f.face = desc.faces[o.index];
   for (int i = 0; i < 3; ++i) {
     f.vertices[i] = desc.vertices[s.vertices[i]];
     f.weights[i] = s.weights[i];
   }
   f.denominator = s.denominator;
+  if (towards) f.rational_weights = trim_weights(s, *towards, *lambda);
   return f;
 }
 
@@ -90,6 +95,7 @@ struct Prepared_sum
     options.use_cd_filter = choose_parameter(get_parameter(np_p, internal_np::use_cd_filter), true);
     options.use_octree_filter = choose_parameter(get_parameter(np_p, internal_np::use_octree_filter), true);
     options.use_covering_net = choose_parameter(get_parameter(np_p, internal_np::use_covering_net), true);
+    options.use_trim_points = choose_parameter(get_parameter(np_p, internal_np::use_trim_points), true);
     options.max_candidates =
       choose_parameter(get_parameter(np_p, internal_np::maximum_number_of_candidates), std::size_t(-1));
     options.callback =
@@ -106,20 +112,21 @@ struct Prepared_sum
                         "Q", desc_q, check_overlaps);
   }
 
-  /// emit(p, q, direction) for the pipeline: writes a Record, or a Point_3 if `out` takes no
+  /// emit(p, q, direction, trim) for the pipeline: writes a Record, or a Point_3 if `out` takes no
   /// records, to out.
   template <class OutputIterator>
   auto make_emit(OutputIterator& out) const
   {
-    return [this, &out](const Sample& sp, const Sample& sq, const Direction& direction) {
-      const typename GT::Point_3 x(sample_coordinate<FT>(mp, sp, 0) + sample_coordinate<FT>(mq, sq, 0),
-                                   sample_coordinate<FT>(mp, sp, 1) + sample_coordinate<FT>(mq, sq, 1),
-                                   sample_coordinate<FT>(mp, sp, 2) + sample_coordinate<FT>(mq, sq, 2));
+    return [this, &out](const Sample& sp, const Sample& sq, const Direction& direction, const Trim* trim) {
+      const typename GT::Point_3 x(sum_coordinate<FT>(mp, mq, sp, sq, trim, 0), sum_coordinate<FT>(mp, mq, sp, sq, trim, 1),
+                                   sum_coordinate<FT>(mp, mq, sp, sq, trim, 2));
       if constexpr (Accepts_record<OutputIterator, Record>::value) {
         const auto n = direction.template vector<double>(mp, mq);
         const double len = std::sqrt(dot(n, n));
-        Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len), to_mesh_feature(sp, desc_p),
-                 to_mesh_feature(sq, desc_q), negate_p};
+        Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len),
+                 trim ? to_mesh_feature(sp, desc_p, &trim->p, &trim->lambda, &trim->origin_p) : to_mesh_feature(sp, desc_p),
+                 trim ? to_mesh_feature(sq, desc_q, &trim->q, &trim->lambda, &trim->origin_q) : to_mesh_feature(sq, desc_q),
+                 negate_p};
         *out++ = r;
       } else {
         *out++ = x;
@@ -150,9 +157,10 @@ struct Prepared_sum
 /// output point are never CD-tested; `use_covering_net(false)` gives every boundary candidate
 /// instead (the paper's output, many times larger). The samples of P and Q are
 /// `d/2`-coverings, which leaves room for the boundary's concave creases, where the
-/// paper's Theorem 2 alone would not guarantee `d`. Exception: in passages of the sum
-/// narrower than the sample spacing, a boundary facet can be a strip without samples
-/// (see the user manual, "Known limits"); `pmsum validate` measures coverage.
+/// paper's Theorem 2 alone would not guarantee `d`; points on the trim curves of the
+/// convolution facets cover the passages of the sum narrower than the sample spacing (user
+/// manual, §4). Exception: a visible piece of a facet strictly inside one lattice cell
+/// (an island, e.g. a tiny void; user manual, "Known limits"); `pmsum validate` measures coverage.
 ///
 /// Closed components of a mesh are solids; components with borders are surfaces.
 ///
@@ -165,7 +173,7 @@ struct Prepared_sum
 /// \param d covering distance, > 0
 /// \param np_p named parameters for P and for the algorithm: `vertex_point_map`,
 ///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true), `use_octree_filter` (true),
-///        `use_covering_net` (true),
+///        `use_covering_net` (true), `use_trim_points` (true),
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,

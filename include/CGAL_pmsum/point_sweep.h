@@ -37,10 +37,10 @@ OutputIterator point_sweep(const PolygonMesh& P, const PointRange& path, double 
   Statistics& stats = statistics ? *statistics : local;
   stats = Statistics();
   in::run_pipeline<ConcurrencyTag>(mp, mq, d, in::Pipeline_options{}, stats,
-                                   [&](const in::Sample& sp, const in::Sample& sq, const in::Direction&) {
-                                     *out++ = Point(in::sample_coordinate<FT>(mp, sp, 0) + in::sample_coordinate<FT>(mq, sq, 0),
-                                                    in::sample_coordinate<FT>(mp, sp, 1) + in::sample_coordinate<FT>(mq, sq, 1),
-                                                    in::sample_coordinate<FT>(mp, sp, 2) + in::sample_coordinate<FT>(mq, sq, 2));
+                                   [&](const in::Sample& sp, const in::Sample& sq, const in::Direction&, const in::Trim* trim) {
+                                     *out++ = Point(in::sum_coordinate<FT>(mp, mq, sp, sq, trim, 0),
+                                                    in::sum_coordinate<FT>(mp, mq, sp, sq, trim, 1),
+                                                    in::sum_coordinate<FT>(mp, mq, sp, sq, trim, 2));
                                    },
                                    start);
   return out;

@@ -182,6 +182,66 @@ struct Ray_traversal
 };
 template <class F> Ray_traversal(std::array<double, 3>, std::array<double, 3>, double, F) -> Ray_traversal<F>;
 
+/// A point base + shift * t of a CD predicate: base in double coordinates, t the translation.
+struct Moving_point
+{
+  const std::array<double, 3>* base;
+  int shift; // -1, 0 or +1
+};
+
+/// A translation X / W, exactly (W > 0).
+struct Exact_point
+{
+  Vec3<Exact_nt> X;
+  Exact_nt W;
+};
+
+/// The translation p + q of a sample of P and a sample of Q, exactly: X = S (p + q) and
+/// W = S, S the product of the samples' denominators.
+inline Exact_point exact_sum(const Mesh_data& P, const Sample& p, const Mesh_data& Q, const Sample& q)
+{
+  auto part = [](const Mesh_data& M, const Sample& s, std::int64_t other_den) {
+    Vec3<Exact_nt> r = {Exact_nt(0), Exact_nt(0), Exact_nt(0)};
+    for (int i = 0; i < 3; ++i)
+      if (s.weights[i] != 0) r = r + scaled(M.point<Exact_nt>(s.vertices[i]), Exact_nt(long(s.weights[i] * other_den)));
+    return r;
+  };
+  return {part(P, p, q.denominator) + part(Q, q, p.denominator),
+          Exact_nt(long(std::int64_t(p.denominator) * q.denominator))};
+}
+
+/// Interval enclosure of X / W.
+inline Vec3<Interval> enclosure(const Exact_point& x)
+{
+  CGAL::Protect_FPU_rounding<true> guard;
+  const Interval w = CGAL::to_interval(x.W);
+  return {Interval(CGAL::to_interval(x.X[0])) / w, Interval(CGAL::to_interval(x.X[1])) / w,
+          Interval(CGAL::to_interval(x.X[2])) / w};
+}
+
+/// The orientation predicate of four moving points is affine in the translation t:
+/// det[b - a, c - a, d - a] = D(0) + g.t. Its gradient g = (sb - sa) u2 x u3 +
+/// (sc - sa) u3 x u1 + (sd - sa) u1 x u2, with u1 = b - a, u2 = c - a, u3 = d - a at t = 0.
+template <class NT>
+Vec3<NT> gradient(const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d)
+{
+  const Vec3<NT> pa = to_nt<NT>(*a.base);
+  const Vec3<NT> u1 = to_nt<NT>(*b.base) - pa, u2 = to_nt<NT>(*c.base) - pa, u3 = to_nt<NT>(*d.base) - pa;
+  Vec3<NT> g = {NT(0), NT(0), NT(0)};
+  if (b.shift != a.shift) g = g + scaled(cross(u2, u3), NT(b.shift - a.shift));
+  if (c.shift != a.shift) g = g + scaled(cross(u3, u1), NT(c.shift - a.shift));
+  if (d.shift != a.shift) g = g + scaled(cross(u1, u2), NT(d.shift - a.shift));
+  return g;
+}
+
+/// D(0) of the same predicate: the orientation of the four base points.
+template <class NT>
+NT value_at_origin(const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d)
+{
+  const Vec3<NT> pa = to_nt<NT>(*a.base);
+  return dot(to_nt<NT>(*d.base) - pa, cross(to_nt<NT>(*b.base) - pa, to_nt<NT>(*c.base) - pa));
+}
+
 /// Counters of the CD filter, for the summary.
 struct Cd_statistics
 {
@@ -246,9 +306,71 @@ public:
     m_sp = m_sq = nullptr;
     m_plain = t;
     m_dirs = nullptr; m_dir_count = 0; m_dir_first = 0;
+    m_prefix = nullptr;
     m_exact_x.reset();
     m_x = to_nt<Interval>(t);
     return configuration_is_free();
+  }
+
+  /// Sets the query to the exact translation x, perturbed first along `prefix` if given
+  /// (a direction along a segment of translations: the answer is then the one just past x
+  /// on that segment), then along the directions (from directions[0]), then the axes.
+  /// The filter keeps pointers to `directions` and `prefix`.
+  void set_point(const Exact_point& x, const Direction* directions, std::uint32_t count, const Vec3<Exact_nt>* prefix)
+  {
+    m_sp = m_sq = nullptr;
+    m_dirs = directions; m_dir_count = count; m_dir_first = 0;
+    m_exact_x.emplace(x.X, x.W);
+    m_x = enclosure(x);
+    m_prefix = prefix;
+    if (prefix) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      for (int c = 0; c < 3; ++c) m_prefix_interval[c] = CGAL::to_interval((*prefix)[c]);
+    }
+  }
+
+  /// Is the query set by set_point() free?
+  bool is_free_here() { return configuration_is_free(); }
+
+  /// Does item u of the moving mesh cross item v of the static mesh for the query set by
+  /// set_point()? `here_perturbed()` then tells whether the test looked at the perturbation.
+  bool pair_crosses_here(Index u, Index v) { return items_cross(u, v); }
+  bool here_perturbed() const { return m_perturbed; }
+  /// The last crossing pair found (moving item, static item), if any.
+  const std::optional<std::pair<Index, Index>>& last_crossing() const { return m_hit; }
+
+  /// Calls f(u, v) for every pair (item u of the moving mesh, item v of the static mesh, not
+  /// two bare edges) whose boxes overlap for some translation in `translations`, until f
+  /// returns true.
+  /// f may change the query; it returns true to stop.
+  template <class F>
+  void for_each_overlapping_pair(const Vec3<Interval>& translations, const F& f)
+  {
+    traverse_pairs(translations, [&](Index u, Index v) { return !(m_moving.is_edge(u) && m_static.is_edge(v)) && f(u, v); });
+  }
+
+  /// Calls f(a, b, c, d) for every orientation predicate that the test of the pair (u, v)
+  /// can evaluate: its answer depends only on their signs.
+  template <class F>
+  void for_each_predicate(Index u, Index v, const F& f) const
+  {
+    const bool eu = m_moving.is_edge(u), ev = m_static.is_edge(v);
+    std::array<Moving_point, 3> A, B; // triangles (moving, static); or a segment in A[0..1] / B[0..1]
+    const Index* m = eu ? m_moving.mesh->edges[m_moving.edge(u)].v.data() : m_moving.mesh->triangles[u].data();
+    const Index* s = ev ? m_static.mesh->edges[m_static.edge(v)].v.data() : m_static.mesh->triangles[v].data();
+    const int nm = eu ? 2 : 3, ns = ev ? 2 : 3;
+    for (int i = 0; i < nm; ++i) A[i] = {&m_moving.base[m[i]], 1};
+    for (int i = 0; i < ns; ++i) B[i] = {&m_static.base[s[i]], 0};
+    // A point of one against the plane of the other (triangles only).
+    if (ns == 3) for (int i = 0; i < nm; ++i) f(B[0], B[1], B[2], A[i]);
+    if (nm == 3) for (int i = 0; i < ns; ++i) f(A[0], A[1], A[2], B[i]);
+    // An edge of one against the edges of the other's triangle.
+    auto edges_against = [&](const std::array<Moving_point, 3>& E, int ne, const std::array<Moving_point, 3>& T) {
+      for (int i = 0; i < (ne == 2 ? 1 : 3); ++i)
+        for (int k = 0; k < 3; ++k) f(E[i], E[(i + 1) % ne], T[k], T[(k + 1) % 3]);
+    };
+    if (ns == 3) edges_against(A, nm, B);
+    if (nm == 3) edges_against(B, ns, A);
   }
 
 private:
@@ -275,6 +397,7 @@ private:
   {
     m_sp = &p; m_sq = &q;
     m_dirs = directions; m_dir_count = count; m_dir_first = first;
+    m_prefix = nullptr;
     m_exact_x.reset();
     CGAL::Protect_FPU_rounding<true> guard;
     m_x = sample_interval(*m_p, p) + sample_interval(*m_q, q);
@@ -295,15 +418,8 @@ private:
   {
     if (!m_exact_x && !m_sp) m_exact_x.emplace(to_nt<Exact_nt>(m_plain), Exact_nt(1));
     if (!m_exact_x) {
-      auto part = [](const Mesh_data& M, const Sample& s, std::int64_t other_den) {
-        Vec3<Exact_nt> r = {Exact_nt(0), Exact_nt(0), Exact_nt(0)};
-        for (int i = 0; i < 3; ++i)
-          if (s.weights[i] != 0)
-            r = r + scaled(M.point<Exact_nt>(s.vertices[i]), Exact_nt(long(s.weights[i] * other_den)));
-        return r;
-      };
-      m_exact_x.emplace(part(*m_p, *m_sp, m_sq->denominator) + part(*m_q, *m_sq, m_sp->denominator),
-                        Exact_nt(long(std::int64_t(m_sp->denominator) * m_sq->denominator)));
+      const Exact_point x = exact_sum(*m_p, *m_sp, *m_q, *m_sq);
+      m_exact_x.emplace(x.X, x.W);
     }
     return *m_exact_x;
   }
@@ -312,7 +428,8 @@ private:
   /// nearest, s = fl(b + x), then moved out by |s| 2^-52, at least one unit in the last place
   /// of s: the exact sum is within half a unit of s and rounding is monotone, so the moved
   /// bound is still beyond it (a sum that rounds to zero or a subnormal is exact).
-  CGAL::Bbox_3 translated_box(const CGAL::Bbox_3& b) const
+  CGAL::Bbox_3 translated_box(const CGAL::Bbox_3& b) const { return translated_box(b, m_x); }
+  static CGAL::Bbox_3 translated_box(const CGAL::Bbox_3& b, const Vec3<Interval>& m_x)
   {
     auto down = [](double s) { return s - std::abs(s) * 0x1p-52; };
     auto up = [](double s) { return s + std::abs(s) * 0x1p-52; };
@@ -321,13 +438,6 @@ private:
   }
 
   // ----- perturbed orientation ---------------------------------------------------------
-  /// A point base + shift * t, base in double coordinates.
-  struct Moving_point
-  {
-    const std::array<double, 3>* base;
-    int shift; // -1, 0 or +1
-  };
-
   template <class NT>
   Vec3<NT> position(const Moving_point& m)
   {
@@ -347,6 +457,14 @@ private:
   CGAL::Sign perturbation_sign(const G& g)
   {
     m_perturbed = true;
+    if (m_prefix) {
+      const CGAL::Sign s = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        if constexpr (std::is_same<NT, Interval>::value) return dot(g(nt), m_prefix_interval);
+        else return dot(g(nt), *m_prefix);
+      });
+      if (s != CGAL::ZERO) return s;
+    }
     for (std::uint32_t k = 0; k < m_dir_count; ++k) {
       const Direction& d = m_dirs[(m_dir_first + k) % m_dir_count];
       const CGAL::Sign s = filtered_sign([&](auto nt) {
@@ -372,17 +490,7 @@ private:
       return dot(position<NT>(d) - pa, cross(position<NT>(b) - pa, position<NT>(c) - pa));
     });
     if (s0 != CGAL::ZERO) return s0;
-    // D(t) = D(0) + g.t with g = (db-da) u2 x u3 + (dc-da) u3 x u1 + (dd-da) u1 x u2.
-    return perturbation_sign([&](auto nt) {
-      using NT = decltype(nt);
-      const Vec3<NT> pa = to_nt<NT>(*a.base);
-      const Vec3<NT> u1 = to_nt<NT>(*b.base) - pa, u2 = to_nt<NT>(*c.base) - pa, u3 = to_nt<NT>(*d.base) - pa;
-      Vec3<NT> g = {NT(0), NT(0), NT(0)};
-      if (b.shift != a.shift) g = g + scaled(cross(u2, u3), NT(b.shift - a.shift));
-      if (c.shift != a.shift) g = g + scaled(cross(u3, u1), NT(c.shift - a.shift));
-      if (d.shift != a.shift) g = g + scaled(cross(u1, u2), NT(d.shift - a.shift));
-      return g;
-    });
+    return perturbation_sign([&](auto nt) { return gradient<decltype(nt)>(a, b, c, d); });
   }
 
   // ----- surface crossing --------------------------------------------------------------
@@ -400,9 +508,6 @@ private:
   /// already known to have no other kind: see decided_without_perturbation().
   bool surfaces_cross()
   {
-    const Bvh& mt = m_moving.items;
-    const Bvh& st = m_static.items;
-    if (mt.empty() || st.empty()) return false;
     // x has no crossing decided at x itself (found by the previous query, on the same samples).
     const bool only_perturbed = m_sp && m_only_perturbed && same(m_only_perturbed->first, *m_sp) &&
                                 same(m_only_perturbed->second, *m_sq);
@@ -419,8 +524,26 @@ private:
       tried = m_hit;
       if (stop(tried->first, tried->second)) return true;
     }
+    if (traverse_pairs(m_x, [&](Index u, Index v) { return !(tried && tried->first == u && tried->second == v) && stop(u, v); }))
+      return true;
+    if (found) {
+      m_perturbed = true;
+      if (m_sp) m_only_perturbed.emplace(*m_sp, *m_sq);
+    }
+    return found;
+  }
+
+  /// Simultaneous traversal of both hierarchies (see surfaces_cross()): calls stop(u, v) for
+  /// every pair of items whose boxes overlap, the moving one translated by the translations
+  /// x and rounded outward, until it returns true; returns whether it did.
+  template <class Stop>
+  bool traverse_pairs(const Vec3<Interval>& x, const Stop& stop)
+  {
+    const Bvh& mt = m_moving.items;
+    const Bvh& st = m_static.items;
+    if (mt.empty() || st.empty()) return false;
     m_stack.clear();
-    if (CGAL::do_overlap(translated_box(mt.root().box), st.root().box)) m_stack.emplace_back(0, 0);
+    if (CGAL::do_overlap(translated_box(mt.root().box, x), st.root().box)) m_stack.emplace_back(0, 0);
     while (!m_stack.empty()) {
       const auto [a, b] = m_stack.back();
       m_stack.pop_back();
@@ -429,32 +552,24 @@ private:
       if (na.is_leaf() && nb.is_leaf()) {
         for (std::uint32_t i = na.first; i < na.first + na.count; ++i) {
           const Index u = mt.item(i);
-          const CGAL::Bbox_3 box = translated_box(mt.item_box(i));
-          for (std::uint32_t j = nb.first; j < nb.first + nb.count; ++j) {
-            const Index v = st.item(j);
-            if (!CGAL::do_overlap(box, st.item_box(j))) continue;
-            if (tried && tried->first == u && tried->second == v) continue; // tried first
-            if (stop(u, v)) return true;
-          }
+          const CGAL::Bbox_3 box = translated_box(mt.item_box(i), x);
+          for (std::uint32_t j = nb.first; j < nb.first + nb.count; ++j)
+            if (CGAL::do_overlap(box, st.item_box(j)) && stop(u, st.item(j))) return true;
         }
         continue;
       }
       // Split the static node if the moving one is a leaf or smaller, else the moving one.
       auto size = [](const CGAL::Bbox_3& x) { return x.x_span() + x.y_span() + x.z_span(); };
       if (na.is_leaf() || (!nb.is_leaf() && size(nb.box) >= size(na.box))) {
-        const CGAL::Bbox_3 box = translated_box(na.box);
+        const CGAL::Bbox_3 box = translated_box(na.box, x);
         for (std::uint32_t c : {b + 1, nb.right})
           if (CGAL::do_overlap(box, st.node(c).box)) m_stack.emplace_back(a, c);
       } else {
         for (std::uint32_t c : {a + 1, na.right})
-          if (CGAL::do_overlap(translated_box(mt.node(c).box), nb.box)) m_stack.emplace_back(c, b);
+          if (CGAL::do_overlap(translated_box(mt.node(c).box, x), nb.box)) m_stack.emplace_back(c, b);
       }
     }
-    if (found) {
-      m_perturbed = true;
-      if (m_sp) m_only_perturbed.emplace(*m_sp, *m_sq);
-    }
-    return found;
+    return false;
   }
 
   static bool same(const Sample& a, const Sample& b)
@@ -640,6 +755,8 @@ private:
   std::array<double, 3> m_plain{}; // a plain translation (m_sp == nullptr)
   const Direction* m_dirs = nullptr;
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
+  const Vec3<Exact_nt>* m_prefix = nullptr; // set_point(): a first perturbation direction
+  Vec3<Interval> m_prefix_interval;
   Vec3<Interval> m_x;
   std::optional<std::pair<Vec3<Exact_nt>, Exact_nt>> m_exact_x;
 };

@@ -38,10 +38,9 @@ public:
   /// cell indices), the net covers nothing: every boundary candidate is kept.
   Covering_net(double d, double scale)
     : m_d(d), m_scale(scale), m_margin(256 * std::numeric_limits<double>::epsilon() * (scale + d)),
-      m_radius(d / 2 - m_margin), m_cell(d / 2)
+      m_cell(d / 2)
   {
-    m_enabled = m_radius > 0 && scale / m_cell < double(std::int64_t(1) << 40);
-    m_radius2 = m_radius * m_radius;
+    m_enabled = m_cell - m_margin > 0 && scale / m_cell < double(std::int64_t(1) << 40);
   }
 
   /// An empty net with the same parameters.
@@ -53,22 +52,26 @@ public:
   /// Lower bound of the distance between two points of the net (exact points).
   double spacing() const { return m_cell - 2 * m_margin; }
 
-  /// Is a point of the net closer than d/2 to the (exact point rounded to) x?
-  bool covers(const Point3& x) const
+  /// Is a point of the net closer than r <= d/2 to (the exact point rounded to) x?
+  bool covers_within(const Point3& x, double r) const
   {
-    if (!m_enabled || m_points.empty()) return false;
+    const double rr = r - m_margin;
+    if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
     const std::array<std::int64_t, 3> c = cell_of(x);
-    for (const auto& o : neighbour_offsets()) { // own cell first: most covered points are found there
+    for (const auto& o : neighbour_offsets()) {
       const auto it = m_cells.find(key({c[0] + o[0], c[1] + o[1], c[2] + o[2]}));
       if (it == m_cells.end()) continue;
       for (std::uint32_t n = it->second; n != none; n = m_next[n]) {
         const Point3& y = m_points[n];
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-        if (dx * dx + dy * dy + dz * dz < m_radius2) return true;
+        if (dx * dx + dy * dy + dz * dz < rr * rr) return true;
       }
     }
     return false;
   }
+
+  /// Is a point of the net closer than d/2 to (the exact point rounded to) x?
+  bool covers(const Point3& x) const { return covers_within(x, m_cell); }
 
   /// Adds x to the net (the caller has checked that it is not covered).
   void insert(const Point3& x)
@@ -113,7 +116,7 @@ private:
     return part(c[0]) | (part(c[1]) << 21) | (part(c[2]) << 42);
   }
 
-  double m_d, m_scale, m_margin, m_radius, m_radius2, m_cell;
+  double m_d, m_scale, m_margin, m_cell;
   bool m_enabled;
   std::unordered_map<std::uint64_t, std::uint32_t> m_cells; // cell -> last point inserted there
   std::vector<Point3> m_points;

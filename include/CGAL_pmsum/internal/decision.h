@@ -24,6 +24,7 @@
 #include <CGAL_pmsum/internal/cd_filter.h>
 #include <CGAL_pmsum/internal/covering_net.h>
 #include <CGAL_pmsum/internal/octree_filter.h>
+#include <CGAL_pmsum/internal/trim_points.h>
 
 #include <array>
 #include <cstdint>
@@ -98,9 +99,11 @@ struct Tentative
 struct Decision_counters
 {
   std::size_t reused = 0, certified = 0, covered = 0, tested_in_commit = 0;
+  std::size_t trim_segments = 0, trim_points = 0, corner_tests = 0;
   void add(const Decision_counters& o)
   {
     reused += o.reused; certified += o.certified; covered += o.covered; tested_in_commit += o.tested_in_commit;
+    trim_segments += o.trim_segments; trim_points += o.trim_points; corner_tests += o.corner_tests;
   }
 };
 
@@ -117,14 +120,17 @@ struct Decision_context
   bool use_cd_filter = true;           // false: every candidate is output
   bool keep_vertex_sums = false;       // vertex + vertex boundary points are output even if covered
   bool record_decisions = false;       // coarse to fine: fill Pair_decision::tested
+  bool trim_points = true;             // search the trim curves of 2-dimensional pairs (trim_points.h)
+  double d = 0;                        // the covering distance
 };
 
 /// The outcome of one pair's decisions.
 struct Pair_decision
 {
   std::vector<Tentative> tentative;     // in canonical order
+  std::vector<Trim_point> trims;        // committed after the tentative points, in their order
   std::vector<std::pair<Decision_cache::Key, std::uint32_t>> tested; // if record_decisions
-  void clear() { tentative.clear(); tested.clear(); }
+  void clear() { tentative.clear(); trims.clear(); tested.clear(); }
 };
 
 /// The CD test of candidate (p, q) of pair fp: its direction, or `inner`.
@@ -138,6 +144,9 @@ inline std::uint32_t cd_decision(Cd_filter& filter, const Candidate_pairs& pairs
   }
   return inner;
 }
+
+inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
+                        std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters);
 
 /// Thread phase: decides the candidates of pair i (see the file comment) into `out`.
 inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* filter, Pair_candidates& candidates,
@@ -153,6 +162,21 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
     for (std::size_t k = 0; k < old_q.size(); ++k) old_q[k] = c.sq->is_sample_of(candidates.q(k), *c.coarser_q);
   }
   std::optional<Covering_net> own; // this pair's tentative points, on top of c.net
+  // The trim search needs what is known of each lattice point of the pair's facet.
+  std::optional<Facet_lattice> lattice;
+  std::vector<Corner_info> corners;
+  if (filter && c.use_cd_filter && c.trim_points && fp.number_of_directions > 0) {
+    lattice.emplace(*c.sp, *c.sq, fp);
+    if (lattice->empty()) lattice.reset();
+    else corners.assign(lattice->size(), Corner_info{});
+  }
+  auto known = [&](std::size_t ip, std::size_t iq, Corner k, const Point3* certified = nullptr) {
+    if (!lattice) return;
+    Corner_info& info = corners[lattice->index_of(candidates.p(ip), candidates.q(iq))];
+    info.status = k;
+    if (certified) info.leaf = c.octree->certified_leaf(*certified);
+    else if (k == Corner::inside) info.witness = filter->last_crossing();
+  };
   candidates.for_each([&](std::size_t ip, std::size_t iq) {
     const Sample &p = candidates.p(ip), &q = candidates.q(iq);
     const Point3 x = positions ? candidates.position(ip, iq) : Point3{};
@@ -165,22 +189,61 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
     }
     if (decision == untested && c.octree && c.octree->certified(x)) {
       ++counters.certified;
+      // What the trim search knows must not depend on the octree: as if tested below.
+      if (!kept && c.net && c.net->covers(x)) known(ip, iq, Corner::covered);
+      else if (kept || !own || !own->covers(x)) known(ip, iq, Corner::inside, &x);
       return;
     }
-    if (decision == inner) return;
-    if (!kept && c.net && c.net->covers(x)) { ++counters.covered; return; }
+    if (decision == inner) { known(ip, iq, Corner::inside, nullptr); return; }
+    if (!kept && c.net && c.net->covers(x)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
     if (!kept && own && own->covers(x)) { out.tentative.push_back({p, q, x, untested, false}); return; }
     if (decision == untested) {
       decision = cd_decision(*filter, *c.pairs, fp, p, q);
       if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), decision);
-      if (decision == inner) return;
+      if (decision == inner) { known(ip, iq, Corner::inside); return; }
     }
+    known(ip, iq, Corner::free);
     out.tentative.push_back({p, q, x, decision, kept});
     if (c.net) {
       if (!own) own.emplace(c.net->empty_like());
       own->insert(x);
     }
   });
+  if (lattice) trim_search(c, fp, *lattice, corners, *filter, out, counters);
+}
+
+/// The trim points of pair fp's facet (trim_points.h). Lattice points that are not this
+/// pair's candidates (on the facet's edges) are covered if the net covers them, else tested
+/// with the pair's directions.
+inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
+                        std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters)
+{
+  std::vector<std::uint8_t> candidate(lattice.size(), 0); // this pair's own samples
+  for (std::size_t k = 0; k < lattice.size(); ++k) {
+    const Sample &p = lattice.p(k), &q = lattice.q(k);
+    const bool interior_p = fp.p.dimension == 0 || (p.weights[0] != 0 && p.weights[1] != 0 && (fp.p.dimension == 1 || p.weights[2] != 0));
+    const bool interior_q = fp.q.dimension == 0 || (q.weights[0] != 0 && q.weights[1] != 0 && (fp.q.dimension == 1 || q.weights[2] != 0));
+    candidate[k] = interior_p && interior_q;
+  }
+  const Mesh_data &P = c.sp->mesh(), &Q = c.sq->mesh();
+  auto corner = [&](std::uint32_t k) -> const Corner_info& {
+    Corner_info& info = corners[k];
+    if (candidate[k] || info.status != Corner::unknown) return info;
+    Point3 x;
+    for (int i = 0; i < 3; ++i) x[i] = sum_coordinate<double>(P, Q, lattice.p(k), lattice.q(k), nullptr, i);
+    if (c.net && c.net->covers(x)) { info.status = Corner::covered; return info; }
+    if (c.octree && (info.leaf = c.octree->certified_leaf(x))) { info.status = Corner::inside; return info; }
+    ++counters.corner_tests;
+    const bool inside = cd_decision(filter, *c.pairs, fp, lattice.p(k), lattice.q(k)) == inner;
+    info.status = inside ? Corner::inside : Corner::free;
+    if (inside) info.witness = filter.last_crossing();
+    return info;
+  };
+  Segment_search search(filter);
+  const std::size_t before = out.trims.size();
+  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, search, out.trims);
+  counters.trim_segments += search.statistics().segments;
+  counters.trim_points += out.trims.size() - before;
 }
 
 /// Commit phase, on one thread, pairs in canonical order: the sequential greedy choice over
@@ -205,6 +268,11 @@ void commit_pair(const Decision_context& c, std::size_t i, Pair_decision& decide
       if (cache) cache->add(Decision_cache::Key::of(i, t.p, t.q), t.direction);
       if (t.direction == inner) continue;
     }
+    if (net) net->insert(t.x);
+    emit(t);
+  }
+  for (const Trim_point& t : decided.trims) {
+    if (net && net->covers_within(t.x, t.radius)) continue;
     if (net) net->insert(t.x);
     emit(t);
   }

@@ -412,10 +412,14 @@ public:
     std::sort(m_certified.begin(), m_certified.end());
   }
 
-  bool certified(const Point3& x) const
+  bool certified(const Point3& x) const { return bool(certified_leaf(x)); }
+
+  /// The leaf of x if it is certified (a convex cell inside the sum).
+  std::optional<Key> certified_leaf(const Point3& x) const
   {
     const std::optional<Key> k = leaf(x);
-    return k && std::binary_search(m_certified.begin(), m_certified.end(), *k);
+    if (k && std::binary_search(m_certified.begin(), m_certified.end(), *k)) return k;
+    return std::nullopt;
   }
 
   std::size_t number_of_leaves() const { return m_leaves; }

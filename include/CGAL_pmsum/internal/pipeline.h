@@ -7,9 +7,11 @@
 //      candidates.h     their sample sums, the candidates, in canonical order
 //   3. octree_filter.h  octree cells of the candidates certified inside the sum
 //      decision.h       each candidate: reused, certified inner, covered by the net, or CD-tested
-//                       (cd_filter.h), in waves of feature pairs (parallel.h)
+//                       (cd_filter.h), in waves of feature pairs (parallel.h); then the pair's
+//                       trim points: trim_points.h (which lattice segments), segment_search.h
+//                       (their free parts, exactly)
 //   4. covering_net.h   the output: the greedy (d/2, d)-net of the boundary candidates
-//   5. emit(p, q, direction) for each output point, on the calling thread, in canonical order.
+//   5. emit(p, q, direction, trim) for each output point (trim: null, or a trim-curve point), on the calling thread, in canonical order.
 
 #ifndef CGAL_PMSUM_INTERNAL_PIPELINE_H
 #define CGAL_PMSUM_INTERNAL_PIPELINE_H
@@ -56,6 +58,7 @@ struct Pipeline_options
   bool use_cd_filter = true;
   bool use_octree_filter = true; // only with the CD filter
   bool use_covering_net = true;  // only with the CD filter; false: every boundary candidate
+  bool use_trim_points = true;   // only with the CD filter: search the trim curves (trim_points.h)
   bool keep_vertex_sums = false; // with the net: vertex + vertex boundary points too, covered or not
   std::size_t max_candidates = std::size_t(-1);
   std::function<bool(double)> callback; // progress in [0, 1]; false cancels
@@ -147,10 +150,15 @@ public:
     std::optional<Covering_net> net;
     if (m_geometry && m_o.use_covering_net) net.emplace(d, m_scale);
     std::vector<Tentative> output; // this level's, for the next one
-    auto output_point = [&](const Tentative& t) {
+    auto output_point = [&](const auto& t) {
       ++stats.output_points;
-      if (m_coarse_to_fine && net) output.push_back(t);
-      emit(t.p, t.q, pairs.directions[t.direction]);
+      if constexpr (std::is_same<std::decay_t<decltype(t)>, Tentative>::value) {
+        if (m_coarse_to_fine && net) output.push_back(t);
+        emit(t.p, t.q, pairs.directions[t.direction], nullptr);
+      } else {
+        ++stats.trim_points;
+        emit(t.p, t.q, pairs.directions[t.direction], &t.trim);
+      }
     };
     // Coarse to fine: the coarser level's points (at least d/2 apart) come first.
     for (const Tentative& t : m_output) {
@@ -168,6 +176,8 @@ public:
     context.use_cd_filter = bool(m_geometry);
     context.record_decisions = m_coarse_to_fine;
     context.keep_vertex_sums = m_o.keep_vertex_sums;
+    context.d = d;
+    context.trim_points = m_o.use_trim_points;
     std::optional<Per_thread<Cd_filter>> filters;
     if (m_geometry) filters.emplace(parallel, &*m_geometry);
     Per_thread<Pair_candidates> candidates(parallel);
@@ -190,6 +200,8 @@ public:
     stats.candidates_reused = commit_counters.reused;
     stats.candidates_certified = commit_counters.certified;
     stats.candidates_covered = commit_counters.covered;
+    stats.trim_segments = commit_counters.trim_segments;
+    stats.corner_tests = commit_counters.corner_tests;
     if (filters)
       filters->for_each([&](const Cd_filter& f) {
         stats.cd_queries += f.statistics().queries;

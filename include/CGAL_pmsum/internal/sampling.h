@@ -22,6 +22,7 @@
 
 #include <CGAL_pmsum/internal/mesh_data.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -170,6 +171,17 @@ public:
     for (Index e = 0; e < m_mesh->number_of_edges(); ++e) count += number_of_samples(Feature{1, e});
     for (Index t = 0; t < m_mesh->number_of_triangles(); ++t) count += number_of_samples(Feature{2, t});
     return count;
+  }
+
+  /// The parameters k / den of edge e's samples with 0 / 1 and 1 / 1 added, increasing.
+  std::vector<std::pair<std::int32_t, std::int32_t>> closed_edge_parameters(Index e) const
+  {
+    std::vector<std::pair<std::int32_t, std::int32_t>> r = {{0, 1}, {1, 1}};
+    for_each_edge_parameter(e, [&](std::int32_t k, std::int32_t den) { r.emplace_back(k, den); });
+    std::sort(r.begin(), r.end(), [](const auto& a, const auto& b) {
+      return std::int64_t(a.first) * b.second < std::int64_t(b.first) * a.second;
+    });
+    return r;
   }
 
 private:

@@ -1,0 +1,270 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stage 3b of the pipeline, first half: the free parts of a segment of translations, exactly.
+//
+// Along a segment x(l) = a + l (b - a), l in [0, 1], every predicate of the CD filter
+// (cd_filter.h) is an orientation determinant affine in the translation, hence affine in l:
+// its sign changes at most once, at a rational root l = D(a) / (D(a) - D(b)). Between two
+// consecutive roots of the predicates of an item pair the pair's answer is constant, so the
+// set of l where the pair crosses is a union of "elements": roots (points) and the open
+// intervals between them. The answer on an open interval is the answer at its left root
+// perturbed first along +(b - a) (Cd_filter::set_point's prefix), which is exact; the
+// answer at a root is the CD filter's own (perturbed along the candidate's directions).
+// The segment's elements are the roots of all pairs whose boxes can overlap on the segment;
+// an element is colliding if some pair crosses there. A run of consecutive non-colliding
+// elements has the same containment answer everywhere (it changes only where surfaces
+// cross), so one full CD query per run decides it. The closure of a free run is free of
+// int(P + Q); its two ends are exact boundary points of the sum when the segment lies on a
+// convolution facet (they are points of the facet, hence of P + Q, and limits of free points).
+//
+// Quick exit: the translations t at which two items cross form an open convex set U. If one
+// pair crosses at a + delta and at b + delta (the same infinitesimal perturbation delta),
+// then x(l) + delta is in U for every l (convexity), every element of the segment collides,
+// and nothing on it is free.
+
+#ifndef CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H
+#define CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H
+
+#include <CGAL_pmsum/internal/cd_filter.h>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// A parameter num / den of a segment, exactly (den > 0).
+struct Segment_parameter
+{
+  Exact_nt num, den;
+  static Segment_parameter zero() { return {Exact_nt(0), Exact_nt(1)}; }
+  static Segment_parameter one() { return {Exact_nt(1), Exact_nt(1)}; }
+};
+
+inline CGAL::Sign compare(const Segment_parameter& a, const Segment_parameter& b)
+{ return CGAL::sign(a.num * b.den - b.num * a.den); }
+inline bool operator<(const Segment_parameter& a, const Segment_parameter& b) { return compare(a, b) == CGAL::NEGATIVE; }
+
+/// A segment of translations [a, b], with a common denominator W.
+struct Translation_segment
+{
+  Exact_point a, b;
+
+  Translation_segment(const Exact_point& pa, const Exact_point& pb) : a(pa), b(pb)
+  {
+    if (pa.W == pb.W) return;
+    a = {{pa.X[0] * pb.W, pa.X[1] * pb.W, pa.X[2] * pb.W}, pa.W * pb.W};
+    b = {{pb.X[0] * pa.W, pb.X[1] * pa.W, pb.X[2] * pa.W}, pa.W * pb.W};
+  }
+
+  /// The point of parameter l, exactly: (den Xa + num (Xb - Xa)) / (den W).
+  Exact_point at(const Segment_parameter& l) const
+  {
+    Exact_point r;
+    for (int c = 0; c < 3; ++c) r.X[c] = l.den * a.X[c] + l.num * (b.X[c] - a.X[c]);
+    r.W = l.den * a.W;
+    return r;
+  }
+};
+
+/// Counters of the segment searches.
+struct Segment_search_statistics
+{
+  std::size_t segments = 0;       // searched segments
+  std::size_t quick_exits = 0;    // decided by one pair crossing at both ends
+  std::size_t pair_tests = 0;     // item-pair tests at elements
+  std::size_t run_queries = 0;    // full CD queries of non-colliding runs
+};
+
+/// The free parts of segments of translations (see the file comment). One per thread, on
+/// that thread's CD filter.
+class Segment_search
+{
+public:
+  explicit Segment_search(Cd_filter& filter) : m_filter(filter) {}
+
+  const Segment_search_statistics& statistics() const { return m_stats; }
+
+  /// Appends to `ends` the parameters of the ends of the free parts of s (sorted, each free
+  /// part giving its first and last parameter, equal for an isolated free point). Points are
+  /// perturbed along directions[0], ..., directions[count - 1], then the axes.
+  /// `witnesses`: item pairs known to cross at a or at b, tried first.
+  void free_ends(const Translation_segment& s, const Direction* directions, std::uint32_t count,
+                 std::vector<Segment_parameter>& ends,
+                 const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses = {})
+  {
+    ++m_stats.segments;
+    m_directions = directions;
+    m_count = count;
+    for (int c = 0; c < 3; ++c) m_forward[c] = s.b.X[c] - s.a.X[c];
+    // Quick exit; else m_pairs holds the item pairs whose boxes overlap on the segment.
+    if (collides_on_hull({s.a, s.b}, directions, count, witnesses)) { ++m_stats.quick_exits; return; }
+
+    // Each pair's crossing set: runs of its own elements (between the roots of its own
+    // predicates). The elements of the segment: R_0 = 0 < R_1 < ... < R_k = 1, the ends of
+    // those runs; element 2i is the point R_i and element 2i + 1 the open interval
+    // (R_i, R_i+1). Every pair's answer is constant on every element.
+    std::vector<std::pair<Segment_parameter, Segment_parameter>> runs; // closed or open ends: see below
+    std::vector<std::array<bool, 2>> open_ends;                       // is the run's first / last end excluded?
+    std::vector<Segment_parameter> roots = {Segment_parameter::zero(), Segment_parameter::one()};
+    for (const auto& pair : m_pairs) {
+      const std::vector<Segment_parameter> local = pair_roots(s, pair.first, pair.second);
+      const std::size_t n = 2 * local.size() - 1;
+      std::size_t e = 0;
+      while (e < n) {
+        if (!crosses_on(s, local, e, pair)) { ++e; continue; }
+        std::size_t end = e;
+        while (end + 1 < n && crosses_on(s, local, end + 1, pair)) ++end;
+        runs.emplace_back(local[e / 2], local[(end + 1) / 2]);
+        open_ends.push_back({e % 2 == 1, end % 2 == 1});
+        roots.push_back(local[e / 2]);
+        roots.push_back(local[(end + 1) / 2]);
+        e = end + 1;
+      }
+    }
+    sort_unique(roots);
+    const std::size_t elements = 2 * roots.size() - 1;
+    std::vector<int> delta(elements + 1, 0); // covering counts, as differences
+    auto index = [&](const Segment_parameter& l) { return std::size_t(std::lower_bound(roots.begin(), roots.end(), l) - roots.begin()); };
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const std::size_t first = 2 * index(runs[r].first) + (open_ends[r][0] ? 1 : 0);
+      const std::size_t last = 2 * index(runs[r].second) - (open_ends[r][1] ? 1 : 0);
+      if (first > last) continue;
+      ++delta[first];
+      --delta[last + 1];
+    }
+    std::vector<std::uint8_t> colliding(elements, 0);
+    for (std::size_t e = 0, count = 0; e < elements; ++e) colliding[e] = (count += delta[e]) > 0;
+
+    // One query per run of non-colliding elements.
+    for (std::size_t e = 0; e < elements;) {
+      if (colliding[e]) { ++e; continue; }
+      std::size_t end = e;
+      while (end + 1 < elements && !colliding[end + 1]) ++end;
+      std::size_t rep = e;
+      while (rep <= end && rep % 2 == 0) ++rep;
+      if (rep > end) rep = e;
+      ++m_stats.run_queries;
+      if (free_at(s, roots, rep)) {
+        ends.push_back(roots[e / 2]);             // a point, or an interval's left root
+        ends.push_back(roots[(end + 1) / 2]);     // a point, or an interval's right root
+      }
+      e = end + 1;
+    }
+  }
+
+  /// Does one item pair cross at every one of the points (perturbed along the directions,
+  /// then the axes)? Then it crosses on their convex hull (see the file comment), where
+  /// nothing is free.
+  bool collides_on_hull(const std::vector<Exact_point>& points, const Direction* directions, std::uint32_t count,
+                        const std::array<std::optional<std::pair<Index, Index>>, 2>& first = {})
+  {
+    m_directions = directions;
+    m_count = count;
+    auto crosses_everywhere = [&](const std::pair<Index, Index>& pair) {
+      for (const Exact_point& x : points) {
+        ++m_stats.pair_tests;
+        m_filter.set_point(x, m_directions, m_count, nullptr);
+        if (!m_filter.pair_crosses_here(pair.first, pair.second)) return false;
+      }
+      return true;
+    };
+    for (const auto& pair : {first[0], first[1], m_last_quick, m_filter.last_crossing()})
+      if (pair && crosses_everywhere(*pair)) { m_last_quick = pair; return true; }
+    Vec3<Interval> hull = enclosure(points.front());
+    for (const Exact_point& x : points) {
+      const Vec3<Interval> e = enclosure(x);
+      for (int c = 0; c < 3; ++c)
+        hull[c] = Interval((std::min)(hull[c].inf(), e[c].inf()), (std::max)(hull[c].sup(), e[c].sup()));
+    }
+    m_pairs.clear();
+    bool found = false;
+    m_filter.for_each_overlapping_pair(hull, [&](Index u, Index v) {
+      m_pairs.emplace_back(u, v);
+      if (!crosses_everywhere(m_pairs.back())) return false;
+      m_last_quick = m_pairs.back();
+      return found = true;
+    });
+    return found;
+  }
+
+private:
+  static void sort_unique(std::vector<Segment_parameter>& v)
+  {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end(),
+                        [](const Segment_parameter& a, const Segment_parameter& b) { return compare(a, b) == CGAL::ZERO; }),
+            v.end());
+  }
+
+  /// 0, the roots in (0, 1) of the predicates of pair (u, v) along s, and 1, sorted, unique.
+  std::vector<Segment_parameter> pair_roots(const Translation_segment& s, Index u, Index v) const
+  {
+    std::vector<Segment_parameter> r = {Segment_parameter::zero()};
+    const Vec3<Interval> ia = enclosure(s.a), ib = enclosure(s.b);
+    m_filter.for_each_predicate(u, v, [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                                          const Moving_point& d) {
+      // D(x) = D(0) + g.x at the ends: no root inside if both certainly have the same sign.
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const Interval d0 = value_at_origin<Interval>(a, b, c, d);
+        const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
+        const Interval da = d0 + dot(g, ia), db = d0 + dot(g, ib);
+        if ((da.inf() > 0 && db.inf() > 0) || (da.sup() < 0 && db.sup() < 0)) return;
+        if ((da.inf() == 0 && da.sup() == 0) || (db.inf() == 0 && db.sup() == 0)) return; // zero at an end
+      }
+      // W D(a) and W D(b), exactly; the root is l = D(a) / (D(a) - D(b)).
+      const Exact_nt d0 = value_at_origin<Exact_nt>(a, b, c, d);
+      const Vec3<Exact_nt> g = gradient<Exact_nt>(a, b, c, d);
+      const Exact_nt da = s.a.W * d0 + dot(g, s.a.X), db = s.b.W * d0 + dot(g, s.b.X);
+      const CGAL::Sign sa = CGAL::sign(da), sb = CGAL::sign(db);
+      if (sa == sb || sa == CGAL::ZERO || sb == CGAL::ZERO) return; // no root strictly inside
+      Segment_parameter l{da, da - db};
+      if (CGAL::sign(l.den) == CGAL::NEGATIVE) { l.num = -l.num; l.den = -l.den; }
+      r.push_back(l);
+    });
+    r.push_back(Segment_parameter::one());
+    sort_unique(r);
+    return r;
+  }
+
+  /// Sets the query to element e of `roots`: the point, or the interval just after its
+  /// left root.
+  void set_element(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)
+  {
+    m_filter.set_point(s.at(roots[e / 2]), m_directions, m_count, e % 2 ? &m_forward : nullptr);
+  }
+
+  bool free_at(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)
+  {
+    set_element(s, roots, e);
+    return m_filter.is_free_here();
+  }
+
+  /// Does the pair cross on element e of its own roots `local`?
+  bool crosses_on(const Translation_segment& s, const std::vector<Segment_parameter>& local, std::size_t e,
+                  const std::pair<Index, Index>& pair)
+  {
+    ++m_stats.pair_tests;
+    set_element(s, local, e);
+    return m_filter.pair_crosses_here(pair.first, pair.second);
+  }
+
+  Cd_filter& m_filter;
+  Segment_search_statistics m_stats;
+  const Direction* m_directions = nullptr;
+  std::uint32_t m_count = 0;
+  Vec3<Exact_nt> m_forward;
+  std::vector<std::pair<Index, Index>> m_pairs;
+  std::optional<std::pair<Index, Index>> m_last_quick; // the pair of the last quick exit
+};
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H

@@ -1,0 +1,319 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stage 3b of the pipeline, second half: points on the trim curves of the convolution facets.
+//
+// A 2-dimensional feature pair (a vertex and a triangle, or two edges) spans a convolution
+// facet F, a subset of P + Q. Its closed lattice (the sums of the samples of the two
+// features, their edges and vertices) cuts F into cells: the lattice's small triangles, or
+// the parallelograms of two edge lattices cut along their shorter diagonal. Every point of a
+// cell T is closer than f(T) <= d/2 to a corner of T (sampling.h), and diam(T) <= D_F <= d.
+//
+// Why the lattice alone does not cover: a boundary point y of the sum on F whose nearest
+// corner c is inside the sum (a visible strip of F narrower than the spacing, a passage).
+// Then the visible piece K of F that contains y, within T, either meets the boundary of T,
+// or is an island inside T. If it meets it, the loop around T goes from a free point to
+// the inside corner c, so some edge of T holds an end of a free interval (segment_search.h):
+// a "trim point", exactly on the boundary of the sum, in T, closer than D_F to y (y is not
+// a corner). Every trim point is output unless an output point is closer than d - D_F to
+// it, so y has an output point closer than d. Hence: the edges of every cell with a corner
+// known to be inside (tested, certified or reused) are searched. A cell whose corners are
+// all free or covered needs nothing: its points are within f(T) <= d/2 of a corner, and
+// that corner within d/2 of an output point. (Islands, pieces of F strictly inside one
+// cell, are bounded by trim curves only; they are not found this way: see the user manual.)
+
+#ifndef CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
+#define CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
+
+#include <CGAL_pmsum/internal/candidates.h>
+#include <CGAL_pmsum/internal/segment_search.h>
+
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// The point (1 - lambda) (p0 + q0) + lambda (p + q) of a lattice segment from p0 + q0 to
+/// p + q (same vertex triples on each side); origin_p, origin_q: the features holding its
+/// two parts.
+struct Trim
+{
+  Sample p, q;
+  CGAL::Exact_rational lambda;
+  Feature origin_p, origin_q;
+};
+
+/// Exact barycentric weights over a0's vertices of (1 - lambda) a0 + lambda a (same vertices).
+inline std::array<CGAL::Exact_rational, 3> trim_weights(const Sample& a0, const Sample& a, const CGAL::Exact_rational& lambda)
+{
+  std::array<CGAL::Exact_rational, 3> w;
+  const CGAL::Exact_rational mu = 1 - lambda;
+  for (int i = 0; i < 3; ++i)
+    w[i] = mu * CGAL::Exact_rational(a0.weights[i]) / CGAL::Exact_rational(a0.denominator) +
+           lambda * CGAL::Exact_rational(a.weights[i]) / CGAL::Exact_rational(a.denominator);
+  return w;
+}
+
+/// Converts an Mpzf exactly to CGAL::Exact_rational (GMP's mpq_class, or CGAL::Gmpq).
+template <class Q = CGAL::Exact_rational>
+Q to_rational(const Exact_nt& x)
+{
+  if constexpr (std::is_constructible<Q, CGAL::Gmpq>::value) {
+    return Q(CGAL::Gmpq(x));
+  } else {
+    Q r;
+    x.export_to_mpq_t(r.get_mpq_t());
+    return r;
+  }
+}
+
+/// Converts a rational to FT: exactly if FT is constructible from it, else rounded.
+template <class FT>
+FT rational_to(const CGAL::Exact_rational& r)
+{
+  if constexpr (std::is_constructible<FT, CGAL::Exact_rational>::value) return FT(r);
+  else return FT(CGAL::to_double(r));
+}
+
+/// Coordinate c of an output point p + q, or of the trim point (p, q, trim), in FT (exact
+/// with an exact kernel). The one place where output points become coordinates.
+template <class FT>
+FT sum_coordinate(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const Sample& q, const Trim* trim, int c)
+{
+  const FT at_lattice = sample_coordinate<FT>(P, p, c) + sample_coordinate<FT>(Q, q, c);
+  if (!trim) return at_lattice;
+  const FT lambda = rational_to<FT>(trim->lambda);
+  return at_lattice + lambda * (sample_coordinate<FT>(P, trim->p, c) + sample_coordinate<FT>(Q, trim->q, c) - at_lattice);
+}
+
+/// A trim point found by a pair's search, with the radius within which an output point
+/// covers it.
+struct Trim_point
+{
+  Sample p, q; // the segment's first end
+  Trim trim;
+  Point3 x;
+  double radius;
+  std::uint32_t direction; // index in Candidate_pairs::directions
+};
+
+/// The closed lattice of the convolution facet of a 2-dimensional feature pair.
+class Facet_lattice
+{
+public:
+  Facet_lattice(const Mesh_sampling& sp, const Mesh_sampling& sq, const Feature_pair& fp) : m_fp(fp)
+  {
+    const int dp = fp.p.dimension, dq = fp.q.dimension;
+    if (dp + dq != 2) return;
+    if (dp == 1) edge_lattice(sp, sq);
+    else if (dp == 0) triangle_lattice(sq, fp.p.index, false);
+    else triangle_lattice(sp, fp.q.index, true);
+    m_diameter *= 1 + 1e-9; // rounding of the double lengths
+  }
+
+  bool empty() const { return m_cells.empty(); }
+  std::size_t size() const { return m_p.size(); }
+  const Sample& p(std::size_t i) const { return m_p[i]; }
+  const Sample& q(std::size_t i) const { return m_q[i]; }
+  const std::vector<std::array<std::uint32_t, 3>>& cells() const { return m_cells; }
+  /// The lattice points at the facet's corners (its convex hull).
+  std::vector<std::uint32_t> corners() const
+  {
+    if (m_fp.p.dimension == 1) {
+      const auto np = std::uint32_t(m_params_p.size()), nq = std::uint32_t(m_params_q.size());
+      return {0, nq - 1, (np - 1) * nq, np * nq - 1};
+    }
+    return {std::uint32_t(triangle_index(0, 0)), std::uint32_t(triangle_index(m_n, 0)), std::uint32_t(triangle_index(0, m_n))};
+  }
+  /// Bound of the diameter of every cell.
+  double diameter() const { return m_diameter; }
+
+  /// The lattice point of the candidate (p, q) of this pair (interior samples).
+  std::size_t index_of(const Sample& p, const Sample& q) const
+  {
+    if (m_fp.p.dimension == 1) return edge_index(m_params_p, p) * m_params_q.size() + edge_index(m_params_q, q);
+    const Sample& s = m_fp.p.dimension == 0 ? q : p;
+    return triangle_index(s.weights[0], s.weights[1]);
+  }
+
+  /// The feature of side `which` (0: P, 1: Q) holding the point with weights w over that
+  /// side's vertex triple.
+  Feature origin(int which, const std::array<CGAL::Exact_rational, 3>& w, const Mesh_data& M) const
+  {
+    const Feature f = which == 0 ? m_fp.p : m_fp.q;
+    if (f.dimension == 0) return f;
+    std::array<bool, 3> nz;
+    for (int i = 0; i < 3; ++i) nz[i] = CGAL::sign(w[i]) != CGAL::ZERO;
+    if (f.dimension == 1) {
+      if (nz[0] && nz[1]) return f;
+      return Feature{0, M.edges[f.index].v[nz[0] ? 0 : 1]};
+    }
+    const int count = int(nz[0]) + int(nz[1]) + int(nz[2]);
+    if (count == 3) return f;
+    const auto& t = M.triangles[f.index];
+    for (int i = 0; i < 3; ++i) {
+      if (count == 1 && nz[i]) return Feature{0, t[i]};
+      if (count == 2 && nz[i] && nz[(i + 1) % 3]) return Feature{1, M.triangle_edges[f.index][i]};
+    }
+    return f;
+  }
+
+private:
+  std::size_t triangle_index(std::int32_t i, std::int32_t j) const
+  { return std::size_t(i) * (m_n + 1) - std::size_t(i) * (i - 1) / 2 + std::size_t(j); }
+
+  static std::size_t edge_index(const std::vector<std::pair<std::int32_t, std::int32_t>>& params, const Sample& s)
+  {
+    const std::pair<std::int32_t, std::int32_t> key(s.weights[1], s.denominator);
+    return std::size_t(std::lower_bound(params.begin(), params.end(), key, [](const auto& a, const auto& b) {
+                         return std::int64_t(a.first) * b.second < std::int64_t(b.first) * a.second;
+                       }) - params.begin());
+  }
+
+  /// Vertex v of the other side + the lattice of triangle t of `s` (`t_is_p`: t on P's side).
+  void triangle_lattice(const Mesh_sampling& s, Index v, bool t_is_p)
+  {
+    const Index t = t_is_p ? m_fp.p.index : m_fp.q.index;
+    const Mesh_data& M = s.mesh();
+    const auto& tri = M.triangles[t];
+    const std::int32_t n = s.triangle_resolution(t);
+    m_n = n;
+    const Sample vertex{Feature{0, v}, {v, v, v}, {1, 0, 0}, 1};
+    for (std::int32_t i = 0; i <= n; ++i)
+      for (std::int32_t j = 0; i + j <= n; ++j) {
+        const Sample st{Feature{2, t}, tri, {i, j, n - i - j}, n}; // origin: the facet (see origin())
+        m_p.push_back(t_is_p ? st : vertex);
+        m_q.push_back(t_is_p ? vertex : st);
+      }
+    for (std::int32_t i = 0; i < n; ++i)
+      for (std::int32_t j = 0; i + j < n; ++j) {
+        const auto a = std::uint32_t(triangle_index(i, j)), b = std::uint32_t(triangle_index(i + 1, j)),
+                   c = std::uint32_t(triangle_index(i, j + 1));
+        m_cells.push_back({a, b, c});
+        if (i + j + 1 < n) m_cells.push_back({b, c, std::uint32_t(triangle_index(i + 1, j + 1))});
+      }
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) {
+      const auto e = M.points[tri[(k + 1) % 3]] - M.points[tri[k]];
+      longest = (std::max)(longest, std::sqrt(dot(e, e)));
+    }
+    m_diameter = longest / n;
+  }
+
+  /// Edge of P + edge of Q: the grid of their closed parameter lists, cells cut along the
+  /// shorter diagonal.
+  void edge_lattice(const Mesh_sampling& sp, const Mesh_sampling& sq)
+  {
+    const Mesh_data &P = sp.mesh(), &Q = sq.mesh();
+    m_params_p = sp.closed_edge_parameters(m_fp.p.index);
+    m_params_q = sq.closed_edge_parameters(m_fp.q.index);
+    const auto& ep = P.edges[m_fp.p.index];
+    const auto& eq = Q.edges[m_fp.q.index];
+    const auto up = P.points[ep.v[1]] - P.points[ep.v[0]];
+    const auto uq = Q.points[eq.v[1]] - Q.points[eq.v[0]];
+    const auto n = cross(up, uq);
+    if (dot(n, n) == 0) return; // parallel edges: no facet
+    auto sample = [](const Feature& f, const auto& e, const std::pair<std::int32_t, std::int32_t>& k) {
+      return Sample{f, {e.v[0], e.v[1], e.v[1]}, {k.second - k.first, k.first, 0}, k.second};
+    };
+    for (const auto& kp : m_params_p)
+      for (const auto& kq : m_params_q) {
+        m_p.push_back(sample(m_fp.p, ep, kp));
+        m_q.push_back(sample(m_fp.q, eq, kq));
+      }
+    const std::size_t nq = m_params_q.size();
+    const bool anti = dot(up, uq) > 0; // then (i + 1, j) - (i, j + 1) is the shorter diagonal
+    const double lp = std::sqrt(dot(up, up)), lq = std::sqrt(dot(uq, uq));
+    auto param = [](const std::pair<std::int32_t, std::int32_t>& k) { return double(k.first) / k.second; };
+    for (std::size_t i = 0; i + 1 < m_params_p.size(); ++i)
+      for (std::size_t j = 0; j + 1 < nq; ++j) {
+        const auto a = std::uint32_t(i * nq + j), b = std::uint32_t((i + 1) * nq + j), c = std::uint32_t(i * nq + j + 1),
+                   e = std::uint32_t((i + 1) * nq + j + 1);
+        if (anti) { m_cells.push_back({a, b, c}); m_cells.push_back({b, c, e}); }
+        else { m_cells.push_back({a, b, e}); m_cells.push_back({a, c, e}); }
+        const double sp_len = (param(m_params_p[i + 1]) - param(m_params_p[i])) * lp;
+        const double sq_len = (param(m_params_q[j + 1]) - param(m_params_q[j])) * lq;
+        const std::array<double, 3> diag = {up[0] * (sp_len / lp) + (anti ? -1 : 1) * uq[0] * (sq_len / lq),
+                                            up[1] * (sp_len / lp) + (anti ? -1 : 1) * uq[1] * (sq_len / lq),
+                                            up[2] * (sp_len / lp) + (anti ? -1 : 1) * uq[2] * (sq_len / lq)};
+        m_diameter = (std::max)({m_diameter, sp_len, sq_len, std::sqrt(dot(diag, diag))});
+      }
+  }
+
+  Feature_pair m_fp;
+  std::int32_t m_n = 0;
+  std::vector<std::pair<std::int32_t, std::int32_t>> m_params_p, m_params_q;
+  std::vector<Sample> m_p, m_q;
+  std::vector<std::array<std::uint32_t, 3>> m_cells;
+  double m_diameter = 0;
+};
+
+/// What is known of a lattice point when the trim search starts: its status, and for an
+/// inside one, the item pair whose crossing decided it, or its certified octree leaf.
+enum class Corner : std::uint8_t { unknown, inside, free, covered };
+struct Corner_info
+{
+  Corner status = Corner::unknown;
+  std::optional<std::pair<Index, Index>> witness;
+  std::optional<std::uint64_t> leaf;
+};
+
+/// The trim points of a facet lattice (see the file comment): the free-part ends of the
+/// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
+/// point i, computing it if needed), appended to `out` in a canonical order. A segment is
+/// skipped without a search when both ends lie in one certified octree leaf (convex, inside
+/// the sum), or when the pair that decided one end crosses at the other end too.
+template <class CornerInfo>
+void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
+                      const Candidate_pairs& pairs, const Feature_pair& fp, double d, const CornerInfo& corner,
+                      Segment_search& search, std::vector<Trim_point>& out)
+{
+  std::set<std::pair<std::uint32_t, std::uint32_t>> segments; // canonical order, each once
+  for (const auto& cell : lattice.cells()) {
+    bool inside = false;
+    for (std::uint32_t c : cell) inside = inside || corner(c).status == Corner::inside;
+    if (!inside) continue;
+    for (int k = 0; k < 3; ++k)
+      segments.emplace((std::min)(cell[k], cell[(k + 1) % 3]), (std::max)(cell[k], cell[(k + 1) % 3]));
+  }
+  if (segments.empty()) return;
+  std::vector<std::optional<Exact_point>> exact(lattice.size()); // lattice points, once each
+  auto point = [&](std::uint32_t k) -> const Exact_point& {
+    if (!exact[k]) exact[k] = exact_sum(P, lattice.p(k), Q, lattice.q(k));
+    return *exact[k];
+  };
+  const Direction* directions = pairs.directions.data() + fp.first_direction;
+  const double radius = (std::max)(0., d - lattice.diameter());
+  std::vector<Segment_parameter> ends;
+  for (const auto& [a, b] : segments) {
+    const Corner_info &ca = corner(a), &cb = corner(b);
+    if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
+    const Translation_segment s(point(a), point(b));
+    ends.clear();
+    search.free_ends(s, directions, fp.number_of_directions, ends, {ca.witness, cb.witness});
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+      if (k > 0 && compare(ends[k], ends[k - 1]) == CGAL::ZERO) continue; // an isolated free point
+      Trim_point t{lattice.p(a), lattice.q(a), Trim{lattice.p(b), lattice.q(b), {}, {}, {}}, {}, radius, fp.first_direction};
+      t.trim.lambda = to_rational(ends[k].num) / to_rational(ends[k].den);
+      t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim.p, t.trim.lambda), P);
+      t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim.q, t.trim.lambda), Q);
+      for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
+      out.push_back(std::move(t));
+    }
+  }
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
