@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+# Copyright (c) 2026 CGAL_pmsum contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Trim-curve points, side by side: pmsum with the default settings against --no-trim-points,
+on narrow passages (validated against Nef: exactness and coverage) and on bundled models (time
+and points). Writes benchmark/results/trim_points.md.
+
+usage: /usr/bin/python3 benchmark/trim_points.py [--pmsum build/pmsum] [--threads 2]"""
+import argparse, json, math, os, subprocess, tempfile, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def write_off(path, parts):
+    verts, faces = [], []
+    for v, f in parts:
+        o = len(verts)
+        verts += v
+        faces += [tuple(i + o for i in x) for x in f]
+    with open(path, "w") as fh:
+        fh.write("OFF\n%d %d 0\n" % (len(verts), len(faces)))
+        for v in verts:
+            fh.write("%.17g %.17g %.17g\n" % v)
+        for f in faces:
+            fh.write("%d %s\n" % (len(f), " ".join(map(str, f))))
+
+
+QUADS = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+
+
+def box(lo, hi):
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    return [(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0),
+            (x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)], QUADS
+
+
+def tunnel_block():  # as tunnel_block() in src/shapes.h
+    return [box((0, 0, 0), (1.5, 4, 4)), box((2.5, 0, 0), (4, 4, 4)),
+            box((1.5, 0, 0), (2.5, 1.5, 4)), box((1.5, 2.5, 0), (2.5, 4, 4))]
+
+
+def turned_cube(side, c, s):  # as turned_cube() in src/shapes.h
+    h = side / 2
+    v = [(c * a - s * b, s * a + c * b, z) for z in (-h, h) for (a, b) in ((-h, -h), (h, -h), (h, h), (-h, h))]
+    return [(v, QUADS)]
+
+
+def run(pmsum, command, p, q, d, extra, threads):
+    with tempfile.TemporaryDirectory() as tmp:
+        js = os.path.join(tmp, "s.json")
+        args = [pmsum, command, p, q, "-d", str(d), "--quiet", "--threads", str(threads), "--json", js] + extra
+        if command == "sum":
+            args += ["-o", os.path.join(tmp, "o.xyz")]
+        t0 = time.time()
+        r = subprocess.run(args, capture_output=True, text=True)
+        seconds = time.time() - t0
+        if r.returncode not in (0, 4):
+            raise RuntimeError(" ".join(args) + ": " + r.stderr)
+        with open(js) as fh:
+            j = json.load(fh)
+    return j, seconds
+
+
+def find(j, key):
+    if isinstance(j, dict):
+        if key in j:
+            return j[key]
+        for v in j.values():
+            r = find(v, key)
+            if r is not None:
+                return r
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--pmsum", default=os.path.join(ROOT, "build", "pmsum"))
+    ap.add_argument("--threads", type=int, default=2)
+    a = ap.parse_args()
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        block = os.path.join(tmp, "tunnel.off")
+        write_off(block, tunnel_block())
+        d = 0.04 * math.sqrt(3) * 5
+        for w in (d, d / 10, d / 1000):
+            cube = os.path.join(tmp, "cube.off")
+            write_off(cube, turned_cube((1 - w) / 1.4, 0.8, 0.6))
+            name = "tunnel + turned cube, passage %g d" % (w / d)
+            for extra in ([], ["--no-trim-points"]):
+                j, s = run(a.pmsum, "validate", block, cube, d, extra, a.threads)
+                rows.append((name, "default" if not extra else "--no-trim-points", s, find(j, "output_points"),
+                             find(j, "trim_points"), find(j, "exactness_failures"), find(j, "worst_coverage_over_d")))
+        data = os.path.join(ROOT, "data")
+        for p, q in (("knot1.off", "tetrahedron.off"), ("elephant.off", "octahedron.off"), ("star.off", "cross.off")):
+            for extra in ([], ["--no-trim-points"]):
+                j, s = run(a.pmsum, "sum", os.path.join(data, p), os.path.join(data, q), 0.02, extra + ["--relative"],
+                           a.threads)
+                rows.append(("%s + %s, d = 2%%" % (p, q), "default" if not extra else "--no-trim-points", s,
+                             find(j, "output_points"), find(j, "trim_points"), None, None))
+    out = os.path.join(ROOT, "benchmark", "results", "trim_points.md")
+    with open(out, "w") as fh:
+        fh.write("# Trim-curve points: default against --no-trim-points (%d threads)\n\n" % a.threads)
+        fh.write("Made by `/usr/bin/python3 benchmark/trim_points.py`. Narrow passages are validated against\n"
+                 "Nef (`pmsum validate`: points off the exact boundary, worst coverage over all shells / d);\n"
+                 "the bundled models are timed only (`pmsum sum`). Seconds are the whole command's.\n\n")
+        fh.write("| pair | run | seconds | points | trim points | off boundary | worst coverage / d | time ratio |\n")
+        fh.write("|---|---|---:|---:|---:|---:|---:|---:|\n")
+        for i, r in enumerate(rows):
+            ratio = "%.2f" % (rows[i][2] / rows[i + 1][2]) if r[1] == "default" else ""
+            fh.write("| %s | %s | %.2f | %s | %s | %s | %s | %s |\n" % (
+                r[0], r[1], r[2], r[3], r[4] if r[4] is not None else "", "" if r[5] is None else r[5],
+                "" if r[6] is None else "%.3g" % r[6], ratio))
+    print(open(out).read())
+
+
+if __name__ == "__main__":
+    main()
