@@ -101,7 +101,8 @@ public:
     m_directions = directions;
     m_count = count;
     for (int c = 0; c < 3; ++c) m_forward[c] = s.b.X[c] - s.a.X[c];
-    // Quick exit; else m_pairs holds the item pairs whose boxes overlap on the segment.
+    // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
+    if (covered_by_hops(s)) { ++m_stats.quick_exits; return; }
     if (collides_on_hull({s.a, s.b}, directions, count, witnesses)) { ++m_stats.quick_exits; return; }
 
     // Each pair's crossing set: runs of its own elements (between the roots of its own
@@ -193,6 +194,32 @@ public:
   }
 
 private:
+  /// Is the segment covered by the crossing runs of a chain of item pairs, each found by a
+  /// CD query on the element where the previous run ends (at most 16)? Cheap when many
+  /// small items hide the segment one after the other (fine meshes), where no single pair
+  /// crosses at both ends.
+  bool covered_by_hops(const Translation_segment& s)
+  {
+    Segment_parameter at = Segment_parameter::zero();
+    bool on_gap = false; // the element: the point `at`, or the open interval just after it
+    for (int hop = 0; hop < 16; ++hop) {
+      m_filter.set_point(s.at(at), m_directions, m_count, on_gap ? &m_forward : nullptr);
+      if (m_filter.is_free_here()) return false;
+      const std::optional<std::pair<Index, Index>> hit = m_filter.last_crossing();
+      if (!hit || !m_filter.pair_crosses_here(hit->first, hit->second)) return false; // containment
+      const std::vector<Segment_parameter> local = pair_roots(s, hit->first, hit->second);
+      const std::size_t k = std::size_t(std::upper_bound(local.begin(), local.end(), at) - local.begin()) - 1;
+      const bool root = compare(local[k], at) == CGAL::ZERO;
+      std::size_t end = (root && !on_gap) ? 2 * k : 2 * k + 1; // the pair's element holding ours
+      const std::size_t n = 2 * local.size() - 1;
+      while (end + 1 < n && crosses_on(s, local, end + 1, *hit)) ++end;
+      if (end + 1 == n) return true; // up to the point 1
+      at = local[(end + 1) / 2];
+      on_gap = (end + 1) % 2 == 1;
+    }
+    return false;
+  }
+
   static void sort_unique(std::vector<Segment_parameter>& v)
   {
     std::sort(v.begin(), v.end());
