@@ -152,7 +152,8 @@ struct Prepared_sum
 /// Every output point lies exactly on the boundary (decided with exact predicates and a
 /// symbolic perturbation, no tolerance), and the output is a `d`-covering of the boundary:
 /// every boundary point has an output point closer than `d`. By default it is a
-/// (d/2, d)-net: no two output points are closer than `d/2` (up to a margin of a few hundred
+/// (d/2, d)-net: no two lattice points of the output (records without `rational_weights`)
+/// are closer than `d/2` (up to a margin of a few hundred
 /// units in the last place of the largest coordinate), and candidates closer than `d/2` to an
 /// output point are never CD-tested; `use_covering_net(false)` gives every boundary candidate
 /// instead (the paper's output, many times larger). The samples of P and Q are
