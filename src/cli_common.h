@@ -412,6 +412,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("candidates_covered", stats.candidates_covered)
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
     .integer("containment_tests", stats.containment_tests).integer("corner_tests", stats.corner_tests)
+    .integer("trim_queries", stats.trim_queries)
     .integer("trim_segments", stats.trim_segments).integer("trim_points", stats.trim_points)
     .integer("output_points", stats.output_points);
   return j;

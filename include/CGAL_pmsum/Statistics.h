@@ -22,11 +22,12 @@ struct Statistics
   std::size_t candidates_certified = 0;     ///< candidates in certified cells: never CD-tested
   std::size_t candidates_reused = 0;        ///< coarse to fine: decided by the coarser level
   std::size_t candidates_covered = 0;       ///< closer than d/2 to an output point: never CD-tested
-  std::size_t cd_queries = 0;               ///< collision tests (one per candidate and direction tried)
-  std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests inside them
-  std::size_t containment_tests = 0;        ///< exact point-in-solid tests inside them
+  std::size_t cd_queries = 0;               ///< collision tests of candidates (one per candidate and direction tried)
+  std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests (CD filter and trim search)
+  std::size_t containment_tests = 0;        ///< exact point-in-solid tests (CD filter and trim search)
   std::size_t corner_tests = 0;             ///< CD tests of facet lattice points on the facets' edges (trim search)
   std::size_t trim_segments = 0;            ///< lattice segments searched for trim-curve points
+  std::size_t trim_queries = 0;             ///< collision tests of the trim search (corner tests and segment searches)
   std::size_t trim_points = 0;              ///< output points on trim curves (between lattice points)
   std::size_t output_points = 0;            ///< the (d/2, d)-net, or every boundary candidate
   double seconds_setup = 0;                 ///< input checks, sampling resolutions, AABB trees

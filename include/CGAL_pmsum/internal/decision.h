@@ -99,11 +99,12 @@ struct Tentative
 struct Decision_counters
 {
   std::size_t reused = 0, certified = 0, covered = 0, tested_in_commit = 0;
-  std::size_t trim_segments = 0, trim_points = 0, corner_tests = 0;
+  std::size_t trim_segments = 0, trim_points = 0, corner_tests = 0, trim_queries = 0;
   void add(const Decision_counters& o)
   {
     reused += o.reused; certified += o.certified; covered += o.covered; tested_in_commit += o.tested_in_commit;
     trim_segments += o.trim_segments; trim_points += o.trim_points; corner_tests += o.corner_tests;
+    trim_queries += o.trim_queries;
   }
 };
 
@@ -218,17 +219,10 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
 inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
                         std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters)
 {
-  std::vector<std::uint8_t> candidate(lattice.size(), 0); // this pair's own samples
-  for (std::size_t k = 0; k < lattice.size(); ++k) {
-    const Sample &p = lattice.p(k), &q = lattice.q(k);
-    const bool interior_p = fp.p.dimension == 0 || (p.weights[0] != 0 && p.weights[1] != 0 && (fp.p.dimension == 1 || p.weights[2] != 0));
-    const bool interior_q = fp.q.dimension == 0 || (q.weights[0] != 0 && q.weights[1] != 0 && (fp.q.dimension == 1 || q.weights[2] != 0));
-    candidate[k] = interior_p && interior_q;
-  }
   const Mesh_data &P = c.sp->mesh(), &Q = c.sq->mesh();
   auto corner = [&](std::uint32_t k) -> const Corner_info& {
     Corner_info& info = corners[k];
-    if (candidate[k] || info.status != Corner::unknown) return info;
+    if (lattice.is_candidate(k) || info.status != Corner::unknown) return info;
     Point3 x;
     for (int i = 0; i < 3; ++i) x[i] = sum_coordinate<double>(P, Q, lattice.p(k), lattice.q(k), nullptr, i);
     if (c.net && c.net->covers(x)) { info.status = Corner::covered; return info; }
@@ -240,10 +234,11 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
     return info;
   };
   Segment_search search(filter);
-  const std::size_t before = out.trims.size();
+  const std::size_t before = out.trims.size(), queries_before = filter.statistics().queries;
   find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, search, out.trims);
   counters.trim_segments += search.statistics().segments;
   counters.trim_points += out.trims.size() - before;
+  counters.trim_queries += filter.statistics().queries - queries_before;
 }
 
 /// Commit phase, on one thread, pairs in canonical order: the sequential greedy choice over

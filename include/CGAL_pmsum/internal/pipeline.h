@@ -202,12 +202,14 @@ public:
     stats.candidates_covered = commit_counters.covered;
     stats.trim_segments = commit_counters.trim_segments;
     stats.corner_tests = commit_counters.corner_tests;
+    stats.trim_queries = commit_counters.trim_queries;
     if (filters)
       filters->for_each([&](const Cd_filter& f) {
         stats.cd_queries += f.statistics().queries;
         stats.triangle_pairs += f.statistics().triangle_pairs;
         stats.containment_tests += f.statistics().containment_tests;
       });
+    stats.cd_queries -= stats.trim_queries;
     stats.seconds_cd_filter = seconds_since(start);
     m_output.swap(output);
   }

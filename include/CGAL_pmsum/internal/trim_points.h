@@ -124,6 +124,9 @@ public:
   std::size_t size() const { return m_p.size(); }
   const Sample& p(std::size_t i) const { return m_p[i]; }
   const Sample& q(std::size_t i) const { return m_q[i]; }
+  /// Is lattice point i one of the pair's own candidates (interior to both features), not a
+  /// point of the facet's border?
+  bool is_candidate(std::size_t i) const { return interior(m_fp.p, m_p[i]) && interior(m_fp.q, m_q[i]); }
   const std::vector<std::array<std::uint32_t, 3>>& cells() const { return m_cells; }
   /// The lattice points at the facet's corners (its convex hull).
   std::vector<std::uint32_t> corners() const
@@ -248,6 +251,9 @@ private:
         m_diameter = (std::max)({m_diameter, sp_len, sq_len, std::sqrt(dot(diag, diag))});
       }
   }
+
+  static bool interior(const Feature& f, const Sample& s)
+  { return f.dimension == 0 || (s.weights[0] != 0 && s.weights[1] != 0 && (f.dimension == 1 || s.weights[2] != 0)); }
 
   Feature_pair m_fp;
   std::int32_t m_n = 0;
