@@ -242,6 +242,16 @@ NT value_at_origin(const Moving_point& a, const Moving_point& b, const Moving_po
   return dot(to_nt<NT>(*d.base) - pa, cross(to_nt<NT>(*b.base) - pa, to_nt<NT>(*c.base) - pa));
 }
 
+/// What intervals tell of where an item pair crosses along a segment of translations
+/// x(l) = a + l (b - a), l in [0, 1]: never at l < low or l > high; at every l with
+/// in_from < l < in_to (any perturbation). Elsewhere: unknown (test it).
+struct Crossing_range
+{
+  double low = -HUGE_VAL, in_from = HUGE_VAL, in_to = -HUGE_VAL, high = HUGE_VAL;
+  bool misses_segment() const { return low > 1 || high < 0 || low > high; }
+  bool covers_segment() const { return in_from < 0 && in_to > 1; }
+};
+
 /// Counters of the CD filter, for the summary.
 struct Cd_statistics
 {
@@ -371,6 +381,64 @@ public:
     };
     if (ns == 3) edges_against(A, nm, B);
     if (nm == 3) edges_against(B, ns, A);
+  }
+
+  /// What intervals alone tell of where the pair (u, v) crosses along the segment of
+  /// translations a + l (b - a) (a and b: boxes holding its ends); see Crossing_range.
+  /// Triangle A + t meets triangle B iff t is in the convex polytope B - A, whose facets are
+  /// normal to A, to B or to a cross product of an edge of each: the segment is clipped by
+  /// the slabs of those eleven axes. Bare edges: nothing is known.
+  Crossing_range crossing_range(Index u, Index v, const Vec3<Interval>& a, const Vec3<Interval>& b) const
+  {
+    Crossing_range r;
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    const auto& tm = m_moving.mesh->triangles[u];
+    const auto& ts = m_static.mesh->triangles[v];
+    CGAL::Protect_FPU_rounding<true> guard;
+    std::array<Vec3<Interval>, 3> A, B;
+    for (int i = 0; i < 3; ++i) {
+      A[i] = to_nt<Interval>(m_moving.base[tm[i]]);
+      B[i] = to_nt<Interval>(m_static.base[ts[i]]);
+    }
+    bool inside_known = true;
+    r.in_from = -HUGE_VAL; r.in_to = HUGE_VAL;
+    auto clip = [&](const Vec3<Interval>& w) {
+      if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
+        return; // the zero vector: no facet
+      // The polytope's extent along w: [min_k w.B_k - max_i w.A_i, max_k w.B_k - min_i w.A_i].
+      auto extreme = [&](const std::array<Vec3<Interval>, 3>& T, bool maximum) {
+        Interval m = dot(w, T[0]);
+        for (int k = 1; k < 3; ++k) {
+          const Interval x = dot(w, T[k]);
+          m = maximum ? Interval((std::max)(m.inf(), x.inf()), (std::max)(m.sup(), x.sup()))
+                      : Interval((std::min)(m.inf(), x.inf()), (std::min)(m.sup(), x.sup()));
+        }
+        return m;
+      };
+      const Interval lo = extreme(B, false) - extreme(A, true), hi = extreme(B, true) - extreme(A, false);
+      const Interval wa = dot(w, a), wb = dot(w, b), slope = wb - wa;
+      if (slope.inf() > 0 || slope.sup() < 0) { // lo < wa + l slope < hi
+        const Interval e1 = (lo - wa) / slope, e2 = (hi - wa) / slope;
+        const Interval& enter = slope.inf() > 0 ? e1 : e2;
+        const Interval& leave = slope.inf() > 0 ? e2 : e1;
+        r.low = (std::max)(r.low, enter.inf());
+        r.high = (std::min)(r.high, leave.sup());
+        r.in_from = (std::max)(r.in_from, enter.sup());
+        r.in_to = (std::min)(r.in_to, leave.inf());
+        return;
+      }
+      // Nearly parallel: w.t(l) is between w.a and w.b.
+      const double fl = (std::min)(wa.inf(), wb.inf()), fh = (std::max)(wa.sup(), wb.sup());
+      if (fh < lo.inf() || fl > hi.sup()) r.low = HUGE_VAL; // misses the slab
+      else if (!(fl > lo.sup() && fh < hi.inf())) inside_known = false;
+    };
+    clip(m_moving.normals[u]);
+    clip(m_static.normals[v]);
+    for (int i = 0; i < 3 && !r.misses_segment(); ++i)
+      for (int j = 0; j < 3 && !r.misses_segment(); ++j) clip(cross(A[(i + 1) % 3] - A[i], B[(j + 1) % 3] - B[j]));
+    if (r.misses_segment()) return r;
+    if (!inside_known) { r.in_from = HUGE_VAL; r.in_to = -HUGE_VAL; }
+    return r;
   }
 
 private:
@@ -613,7 +681,7 @@ private:
       A[i] = {&m_moving.base[tm[i]], 1};
       B[i] = {&m_static.base[ts[i]], 0};
     }
-    if (separated_by_a_plane(tm, ts, m_static.normals[s], m_moving.normals[t])) return false;
+    if (separated_by_a_plane(t, s, m_x)) return false;
     std::array<CGAL::Sign, 3> sa, sb; // sides of A's points w.r.t. B's plane, and reverse
     for (int i = 0; i < 3; ++i) sa[i] = orientation(B[0], B[1], B[2], A[i]);
     if (sa[0] == sa[1] && sa[1] == sa[2]) return false;
@@ -623,16 +691,19 @@ private:
   }
 
   /// Quick exit of triangles_cross(): are all vertices of one triangle certainly strictly
-  /// on one side of the other's plane? Interval signs with the normals computed once; when
-  /// certain they are the signs orientation() would return (it looks at the perturbation
-  /// only when the sign at x itself is zero).
-  bool separated_by_a_plane(const std::array<Index, 3>& tm, const std::array<Index, 3>& ts,
-                            const Vec3<Interval>& n_static, const Vec3<Interval>& n_moving) const
+  /// on one side of the other's plane, for every translation in the box x? Interval signs
+  /// with the normals computed once; when certain they are the signs orientation() would
+  /// return (it looks at the perturbation only when the sign at x itself is zero).
+  bool separated_by_a_plane(Index t, Index s, const Vec3<Interval>& x) const
   {
+    const auto& tm = m_moving.mesh->triangles[t];
+    const auto& ts = m_static.mesh->triangles[s];
+    const Vec3<Interval>& n_static = m_static.normals[s];
+    const Vec3<Interval>& n_moving = m_moving.normals[t];
     CGAL::Protect_FPU_rounding<true> guard;
     std::array<Vec3<Interval>, 3> a, b; // moving vertices (translated by x), static vertices
     for (int i = 0; i < 3; ++i) {
-      a[i] = to_nt<Interval>(m_moving.base[tm[i]]) + m_x;
+      a[i] = to_nt<Interval>(m_moving.base[tm[i]]) + x;
       b[i] = to_nt<Interval>(m_static.base[ts[i]]);
     }
     auto one_side = [](const std::array<Vec3<Interval>, 3>& p, const Vec3<Interval>& o, const Vec3<Interval>& n) {

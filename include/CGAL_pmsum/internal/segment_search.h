@@ -18,10 +18,17 @@
 // int(P + Q); its two ends are exact boundary points of the sum when the segment lies on a
 // convolution facet (they are points of the facet, hence of P + Q, and limits of free points).
 //
-// Quick exit: the translations t at which two items cross form an open convex set U. If one
-// pair crosses at a + delta and at b + delta (the same infinitesimal perturbation delta),
-// then x(l) + delta is in U for every l (convexity), every element of the segment collides,
-// and nothing on it is free.
+// The translations t at which two triangles cross form an open convex polytope U (their
+// Minkowski difference), so a pair crosses on one interval of the segment. Intervals alone
+// often know most of it (Cd_filter::crossing_range(): parameters where the pair certainly
+// crosses, and where it certainly does not); the exact tests are left for the elements near
+// the ends of that interval. Quick exits:
+//  - the witnesses of the ends certainly cross on all of the segment (intervals only);
+//  - hops: a chain of pairs' runs, each found by a CD query where the previous one ends;
+//  - one pair crosses at a + delta and at b + delta (the same infinitesimal perturbation
+//    delta): then x(l) + delta is in U for every l (convexity), and nothing is free.
+// Otherwise only the pairs that can change the union of the runs are searched: a pair that
+// can only cross where others certainly cross is dropped (keep_pairs_that_matter()).
 
 #ifndef CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H
 #define CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H
@@ -75,7 +82,8 @@ struct Translation_segment
 struct Segment_search_statistics
 {
   std::size_t segments = 0;       // searched segments
-  std::size_t quick_exits = 0;    // decided by one pair crossing at both ends
+  std::size_t interval_exits = 0; // a witness crosses on all of it, by intervals alone
+  std::size_t quick_exits = 0;    // decided by hops or by one pair crossing at both ends
   std::size_t pair_tests = 0;     // item-pair tests at elements
   std::size_t run_queries = 0;    // full CD queries of non-colliding runs
 };
@@ -102,8 +110,9 @@ public:
     m_count = count;
     for (int c = 0; c < 3; ++c) m_forward[c] = s.b.X[c] - s.a.X[c];
     // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
-    if (covered_by_hops(s)) { ++m_stats.quick_exits; return; }
-    if (collides_on_hull({s.a, s.b}, directions, count, witnesses)) { ++m_stats.quick_exits; return; }
+    if (certainly_covered(s, witnesses)) { ++m_stats.interval_exits; return; }
+    if (covered_by_hops(s, witnesses[0])) { ++m_stats.quick_exits; return; }
+    if (one_pair_covers(s, witnesses)) { ++m_stats.quick_exits; return; }
 
     // Each pair's crossing set: runs of its own elements (between the roots of its own
     // predicates). The elements of the segment: R_0 = 0 < R_1 < ... < R_k = 1, the ends of
@@ -112,14 +121,16 @@ public:
     std::vector<std::pair<Segment_parameter, Segment_parameter>> runs; // closed or open ends: see below
     std::vector<std::array<bool, 2>> open_ends;                       // is the run's first / last end excluded?
     std::vector<Segment_parameter> roots = {Segment_parameter::zero(), Segment_parameter::one()};
-    for (const auto& pair : m_pairs) {
+    keep_pairs_that_matter();
+    for (std::size_t k = 0; k < m_pairs.size(); ++k) {
+      const auto& pair = m_pairs[k];
       const std::vector<Segment_parameter> local = pair_roots(s, pair.first, pair.second);
       const std::size_t n = 2 * local.size() - 1;
       std::size_t e = 0;
       while (e < n) {
-        if (!crosses_on(s, local, e, pair)) { ++e; continue; }
+        if (!crosses_on(s, local, e, pair, m_ranges[k])) { ++e; continue; }
         std::size_t end = e;
-        while (end + 1 < n && crosses_on(s, local, end + 1, pair)) ++end;
+        while (end + 1 < n && crosses_on(s, local, end + 1, pair, m_ranges[k])) ++end;
         runs.emplace_back(local[e / 2], local[(end + 1) / 2]);
         open_ends.push_back({e % 2 == 1, end % 2 == 1});
         roots.push_back(local[e / 2]);
@@ -158,35 +169,36 @@ public:
     }
   }
 
-  /// Does one item pair cross at every one of the points (perturbed along the directions,
-  /// then the axes)? Then it crosses on their convex hull (see the file comment), where
-  /// nothing is free.
-  bool collides_on_hull(const std::vector<Exact_point>& points, const Direction* directions, std::uint32_t count,
-                        const std::array<std::optional<std::pair<Index, Index>>, 2>& first = {})
+  /// Does one item pair cross at both ends of s (perturbed along the directions, then the
+  /// axes)? Then it crosses on all of s (see the file comment), where nothing is free.
+  /// Fills m_pairs with the item pairs that may cross on s, and m_ranges with what is known
+  /// of where (Cd_filter::crossing_range()).
+  bool one_pair_covers(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses)
   {
-    m_directions = directions;
-    m_count = count;
-    auto crosses_everywhere = [&](const std::pair<Index, Index>& pair) {
-      for (const Exact_point& x : points) {
+    auto crosses_at_both_ends = [&](const std::pair<Index, Index>& pair) {
+      for (const Exact_point* x : {&s.a, &s.b}) {
         ++m_stats.pair_tests;
-        m_filter.set_point(x, m_directions, m_count, nullptr);
+        m_filter.set_point(*x, m_directions, m_count, nullptr);
         if (!m_filter.pair_crosses_here(pair.first, pair.second)) return false;
       }
       return true;
     };
-    for (const auto& pair : {first[0], first[1], m_last_quick, m_filter.last_crossing()})
-      if (pair && crosses_everywhere(*pair)) { m_last_quick = pair; return true; }
-    Vec3<Interval> hull = enclosure(points.front());
-    for (const Exact_point& x : points) {
-      const Vec3<Interval> e = enclosure(x);
-      for (int c = 0; c < 3; ++c)
-        hull[c] = Interval((std::min)(hull[c].inf(), e[c].inf()), (std::max)(hull[c].sup(), e[c].sup()));
-    }
+    for (const auto& pair : {witnesses[0], witnesses[1], m_last_quick, m_filter.last_crossing()})
+      if (pair && crosses_at_both_ends(*pair)) { m_last_quick = pair; return true; }
+    const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
+    Vec3<Interval> hull;
+    for (int c = 0; c < 3; ++c)
+      hull[c] = Interval((std::min)(a[c].inf(), b[c].inf()), (std::max)(a[c].sup(), b[c].sup()));
     m_pairs.clear();
+    m_ranges.clear();
     bool found = false;
     m_filter.for_each_overlapping_pair(hull, [&](Index u, Index v) {
+      const Crossing_range range = m_filter.crossing_range(u, v, a, b);
+      if (range.misses_segment()) return false;
       m_pairs.emplace_back(u, v);
-      if (!crosses_everywhere(m_pairs.back())) return false;
+      m_ranges.push_back(range);
+      if (!range.covers_segment() && (range.low > 0 || range.high < 1 || !crosses_at_both_ends(m_pairs.back())))
+        return false;
       m_last_quick = m_pairs.back();
       return found = true;
     });
@@ -194,25 +206,92 @@ public:
   }
 
 private:
+  /// Drops from m_pairs the pairs whose crossings cannot change the union of all crossings:
+  /// C, the union of the intervals where some pair certainly crosses, is covered by a few of
+  /// those pairs (greedily), which are kept; a pair that can only cross inside one component
+  /// of C is dropped (its run lies in the union of the kept ones'). The union of the kept
+  /// pairs' runs is the union of all runs.
+  void keep_pairs_that_matter()
+  {
+    std::vector<std::size_t> order;
+    for (std::size_t k = 0; k < m_pairs.size(); ++k)
+      if (m_ranges[k].in_from < m_ranges[k].in_to) order.push_back(k);
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return m_ranges[i].in_from < m_ranges[j].in_from; });
+    std::vector<std::uint8_t> keep(m_pairs.size(), 0);
+    std::vector<std::pair<double, double>> components; // of C, open
+    for (std::size_t i = 0; i < order.size();) {
+      // A component starts at the first interval left; the interval reaching farthest among
+      // those that overlap it so far extends it, while one does.
+      const double from = m_ranges[order[i]].in_from;
+      double reach = from;
+      for (;;) {
+        std::optional<std::size_t> best;
+        for (; i < order.size() && (m_ranges[order[i]].in_from < reach || m_ranges[order[i]].in_from == from); ++i)
+          if (!best || m_ranges[order[i]].in_to > m_ranges[*best].in_to) best = order[i];
+        if (!best || !(m_ranges[*best].in_to > reach)) break;
+        keep[*best] = 1;
+        reach = m_ranges[*best].in_to;
+      }
+      components.emplace_back(from, reach);
+    }
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < m_pairs.size(); ++k) {
+      bool hidden = false;
+      if (!keep[k]) {
+        const auto c = std::upper_bound(components.begin(), components.end(), m_ranges[k].low,
+                                        [](double l, const std::pair<double, double>& x) { return l < x.first; });
+        hidden = c != components.begin() && std::prev(c)->first < m_ranges[k].low && m_ranges[k].high < std::prev(c)->second;
+      }
+      if (hidden) continue;
+      m_pairs[kept] = m_pairs[k];
+      m_ranges[kept++] = m_ranges[k];
+    }
+    m_pairs.resize(kept);
+    m_ranges.resize(kept);
+  }
+
+  /// Do intervals alone show that the witnesses' crossings cover s (Cd_filter::
+  /// crossing_range(): the first from 0, the second up to 1, meeting)?
+  bool certainly_covered(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses) const
+  {
+    const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
+    std::array<Crossing_range, 2> r; // nothing known without a witness
+    for (int k = 0; k < 2; ++k)
+      if (witnesses[k]) r[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, a, b);
+    return r[0].covers_segment() || r[1].covers_segment() ||
+           (r[0].in_from < 0 && r[1].in_to > 1 && r[0].in_to > r[1].in_from);
+  }
+
   /// Is the segment covered by the crossing runs of a chain of item pairs, each found by a
   /// CD query on the element where the previous run ends (at most 16)? Cheap when many
   /// small items hide the segment one after the other (fine meshes), where no single pair
-  /// crosses at both ends.
-  bool covered_by_hops(const Translation_segment& s)
+  /// crosses at both ends. The first run is `start`'s if intervals show it crosses at 0.
+  bool covered_by_hops(const Translation_segment& s, const std::optional<std::pair<Index, Index>>& start)
   {
+    const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
     Segment_parameter at = Segment_parameter::zero();
     bool on_gap = false; // the element: the point `at`, or the open interval just after it
     for (int hop = 0; hop < 16; ++hop) {
-      m_filter.set_point(s.at(at), m_directions, m_count, on_gap ? &m_forward : nullptr);
-      if (m_filter.is_free_here()) return false;
-      const std::optional<std::pair<Index, Index>> hit = m_filter.last_crossing();
-      if (!hit || !m_filter.pair_crosses_here(hit->first, hit->second)) return false; // containment
+      std::optional<std::pair<Index, Index>> hit;
+      Crossing_range range;
+      if (hop == 0 && start) {
+        range = m_filter.crossing_range(start->first, start->second, a, b);
+        if (range.in_from < 0) hit = start;
+      }
+      if (!hit) {
+        m_filter.set_point(s.at(at), m_directions, m_count, on_gap ? &m_forward : nullptr);
+        if (m_filter.is_free_here()) return false;
+        hit = m_filter.last_crossing();
+        if (!hit || !m_filter.pair_crosses_here(hit->first, hit->second)) return false; // containment
+        range = m_filter.crossing_range(hit->first, hit->second, a, b);
+      }
+      if (range.in_to > 1) return true; // crosses from here (convex) up to the point 1
       const std::vector<Segment_parameter> local = pair_roots(s, hit->first, hit->second);
       const std::size_t k = std::size_t(std::upper_bound(local.begin(), local.end(), at) - local.begin()) - 1;
       const bool root = compare(local[k], at) == CGAL::ZERO;
       std::size_t end = (root && !on_gap) ? 2 * k : 2 * k + 1; // the pair's element holding ours
       const std::size_t n = 2 * local.size() - 1;
-      while (end + 1 < n && crosses_on(s, local, end + 1, *hit)) ++end;
+      while (end + 1 < n && crosses_on(s, local, end + 1, *hit, range)) ++end;
       if (end + 1 == n) return true; // up to the point 1
       at = local[(end + 1) / 2];
       on_gap = (end + 1) % 2 == 1;
@@ -272,7 +351,21 @@ private:
     return m_filter.is_free_here();
   }
 
-  /// Does the pair cross on element e of its own roots `local`?
+  /// Does the pair cross on element e of its own roots `local`? Known from `range` when
+  /// the element's parameters are certainly in or out of it, else tested.
+  bool crosses_on(const Translation_segment& s, const std::vector<Segment_parameter>& local, std::size_t e,
+                  const std::pair<Index, Index>& pair, const Crossing_range& range)
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    auto parameter = [&](const Segment_parameter& l) { return Interval(CGAL::to_interval(l.num)) / CGAL::to_interval(l.den); };
+    const Interval first = parameter(local[e / 2]);
+    const Interval last = e % 2 ? parameter(local[e / 2 + 1]) : first;
+    if (last.sup() < range.low || first.inf() > range.high) return false;
+    if (first.inf() > range.in_from && last.sup() < range.in_to) return true;
+    return crosses_on(s, local, e, pair);
+  }
+
+  /// Does the pair cross on element e of its own roots `local`? (Tested.)
   bool crosses_on(const Translation_segment& s, const std::vector<Segment_parameter>& local, std::size_t e,
                   const std::pair<Index, Index>& pair)
   {
@@ -287,6 +380,7 @@ private:
   std::uint32_t m_count = 0;
   Vec3<Exact_nt> m_forward;
   std::vector<std::pair<Index, Index>> m_pairs;
+  std::vector<Crossing_range> m_ranges;
   std::optional<std::pair<Index, Index>> m_last_quick; // the pair of the last quick exit
 };
 
