@@ -88,8 +88,6 @@ inline void write_points(Output_file& out, const std::vector<Oriented_point>& pt
 class Json
 {
 public:
-  /// Every summary starts with the version of the tool that wrote it.
-  Json() { str("pmsum_version", CGAL_PMSUM_VERSION); }
   Json& add(const std::string& key, const std::string& raw)
   {
     m_items.push_back("\"" + key + "\": " + raw);
@@ -105,6 +103,11 @@ public:
   Json& integer(const std::string& key, std::size_t v) { return add(key, std::to_string(v)); }
   Json& boolean(const std::string& key, bool v) { return add(key, v ? "true" : "false"); }
   Json& object(const std::string& key, const Json& o) { return add(key, o.dump(1)); }
+  Json& append(const Json& o)
+  {
+    m_items.insert(m_items.end(), o.m_items.begin(), o.m_items.end());
+    return *this;
+  }
   std::string dump(int indent = 0) const
   {
     const std::string pad(2 * (indent + 1), ' '), end(2 * indent, ' ');
@@ -126,9 +129,13 @@ private:
   std::vector<std::string> m_items;
 };
 
+/// Writes a summary: it starts with the version of the tool that wrote it (once, not in
+/// its nested objects).
 inline void write_json(Output_file& out, const Json& j)
 {
-  out.write([&](std::ostream& os) { os << j.dump() << "\n"; });
+  Json top;
+  top.str("pmsum_version", CGAL_PMSUM_VERSION).append(j);
+  out.write([&](std::ostream& os) { os << top.dump() << "\n"; });
 }
 
 /// Progress bar on stderr, shown only on a terminal and once a run has lasted a second.
