@@ -1,5 +1,6 @@
 // Non-convex, non-manifold and open operands with exactly known sums, and the filters.
 #include "test_support.h"
+#include <CGAL_pmsum/internal/segment_search.h>
 
 #include <catch2/catch.hpp>
 
@@ -314,4 +315,60 @@ TEST_CASE("interior certificate: every certified box lies inside the exact sum",
     INFO(certified << " of " << inside << " inner boxes certified");
     CHECK(certified > inside / 4); // and useful
   }
+}
+
+TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[filters][trim]")
+{
+  // Cd_filter::crossing_range() tells from intervals where along a segment of translations
+  // a pair of triangles certainly crosses and where it certainly does not; the segment
+  // search trusts it instead of testing. Check it against the exact (perturbed) test.
+  using namespace CGAL::Pmsum::internal;
+  const std::vector<std::pair<Soup, Soup>> cases = {
+    {random_convex(30, 3), random_convex(25, 4)},
+    {l_shape(), transformed(tetrahedron(0.6), 0.7)},
+    {tunnel_block(), turned_cube(0.5, 0.8, 0.6)},
+  };
+  CGAL::Random rng(11);
+  std::size_t in = 0, out = 0, tested = 0;
+  for (const auto& [ps, qs] : cases) {
+    const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
+    Mesh_descriptors<Mesh> dp, dq;
+    const Mesh_data P = make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp);
+    const Mesh_data Q = make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq);
+    const Cd_geometry geometry(P, Q);
+    Cd_filter filter(&geometry);
+    const auto bp = mesh_box(P), bq = mesh_box(Q);
+    for (int k = 0; k < 40; ++k) {
+      std::array<Exact_point, 2> ends;
+      for (auto& e : ends) {
+        e.W = Exact_nt(1);
+        for (int c = 0; c < 3; ++c)
+          e.X[c] = Exact_nt(rng.get_double(bp.first[c] + bq.first[c], bp.second[c] + bq.second[c]));
+      }
+      const Translation_segment s(ends[0], ends[1]);
+      const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
+      Vec3<Interval> hull;
+      for (int c = 0; c < 3; ++c)
+        hull[c] = Interval((std::min)(a[c].inf(), b[c].inf()), (std::max)(a[c].sup(), b[c].sup()));
+      std::vector<std::pair<Index, Index>> pairs;
+      filter.for_each_overlapping_pair(hull, [&](Index u, Index v) { pairs.emplace_back(u, v); return false; });
+      for (const auto& [u, v] : pairs) {
+        const Crossing_range r = filter.crossing_range(u, v, a, b);
+        for (int i = 0; i <= 16; ++i) {
+          const double l = i / 16.0;
+          const bool certainly_in = r.in_from < l && l < r.in_to, certainly_out = l < r.low || l > r.high;
+          if (!certainly_in && !certainly_out) continue;
+          filter.set_point(s.at(Segment_parameter{Exact_nt(i), Exact_nt(16)}), nullptr, 0, nullptr);
+          const bool crosses = filter.pair_crosses_here(u, v);
+          ++tested;
+          INFO("pair " << u << ", " << v << " at l = " << l);
+          CHECK(crosses == certainly_in);
+          (certainly_in ? in : out) += 1;
+        }
+      }
+    }
+  }
+  INFO(in << " certainly crossing, " << out << " certainly not");
+  CHECK(in > 100);   // the ranges decide both ways, often
+  CHECK(out > 1000);
 }
