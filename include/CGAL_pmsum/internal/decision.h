@@ -235,7 +235,8 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
   };
   Segment_search search(filter);
   const std::size_t before = out.trims.size(), queries_before = filter.statistics().queries;
-  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, search, out.trims);
+  auto certified_box = [&](const Point3& lo, const Point3& hi) { return c.octree && c.octree->certifies_box(lo, hi); };
+  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, certified_box, search, out.trims);
   counters.trim_segments += search.statistics().segments;
   counters.trim_points += out.trims.size() - before;
   counters.trim_queries += filter.statistics().queries - queries_before;

@@ -414,6 +414,25 @@ public:
 
   bool certified(const Point3& x) const { return bool(certified_leaf(x)); }
 
+  /// Is every leaf cell that the box [lo, hi], grown by the rounding margin, meets certified?
+  /// Then the box is inside the sum. (False for boxes over more than 512 cells.)
+  bool certifies_box(const Point3& lo, const Point3& hi) const
+  {
+    if (!m_enabled || m_certified.empty()) return false;
+    std::array<Key, 3> first, last;
+    for (int c = 0; c < 3; ++c) {
+      const double a = std::floor((lo[c] - m_tol - m_origin[c]) / m_h), b = std::floor((hi[c] + m_tol - m_origin[c]) / m_h);
+      if (!(a >= 0 && b < double(1 << 21) && b - a < 8)) return false;
+      first[c] = Key(a);
+      last[c] = Key(b);
+    }
+    for (Key i = first[0]; i <= last[0]; ++i)
+      for (Key j = first[1]; j <= last[1]; ++j)
+        for (Key k = first[2]; k <= last[2]; ++k)
+          if (!std::binary_search(m_certified.begin(), m_certified.end(), i | (j << 21) | (k << 42))) return false;
+    return true;
+  }
+
   /// The leaf of x if it is certified (a convex cell inside the sum).
   std::optional<Key> certified_leaf(const Point3& x) const
   {

@@ -277,11 +277,11 @@ struct Corner_info
 /// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
 /// point i, computing it if needed), appended to `out` in a canonical order. A segment is
 /// skipped without a search when both ends lie in one certified octree leaf (convex, inside
-/// the sum), or when the pair that decided one end crosses at the other end too.
-template <class CornerInfo>
+/// the sum), or when `certified_box(lo, hi)` tells that its bounding box is inside the sum.
+template <class CornerInfo, class CertifiedBox>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, const CornerInfo& corner,
-                      Segment_search& search, std::vector<Trim_point>& out)
+                      const CertifiedBox& certified_box, Segment_search& search, std::vector<Trim_point>& out)
 {
   std::set<std::pair<std::uint32_t, std::uint32_t>> segments; // canonical order, each once
   for (const auto& cell : lattice.cells()) {
@@ -303,6 +303,16 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
   for (const auto& [a, b] : segments) {
     const Corner_info &ca = corner(a), &cb = corner(b);
     if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
+    if (ca.status == Corner::inside && cb.status == Corner::inside) {
+      Point3 lo, hi;
+      for (int c = 0; c < 3; ++c) {
+        const double xa = sum_coordinate<double>(P, Q, lattice.p(a), lattice.q(a), nullptr, c);
+        const double xb = sum_coordinate<double>(P, Q, lattice.p(b), lattice.q(b), nullptr, c);
+        lo[c] = (std::min)(xa, xb);
+        hi[c] = (std::max)(xa, xb);
+      }
+      if (certified_box(lo, hi)) continue;
+    }
     const Translation_segment s(point(a), point(b));
     ends.clear();
     search.free_ends(s, directions, fp.number_of_directions, ends, {ca.witness, cb.witness});
