@@ -345,6 +345,11 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
         for (int c = 0; c < 3; ++c)
           e.X[c] = Exact_nt(rng.get_double(bp.first[c] + bq.first[c], bp.second[c] + bq.second[c]));
       }
+      if (k % 2) { // along an edge of a static triangle: parallel to its plane
+        const Tree_mesh& st = geometry.static_mesh;
+        const auto& tri = st.mesh->triangles[rng.get_int(0, int(st.mesh->number_of_triangles()))];
+        for (int c = 0; c < 3; ++c) ends[1].X[c] = ends[0].X[c] + Exact_nt(st.base[tri[1]][c]) - Exact_nt(st.base[tri[0]][c]);
+      }
       const Translation_segment s(ends[0], ends[1]);
       const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
       Vec3<Interval> hull;
@@ -354,6 +359,7 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
       filter.for_each_overlapping_pair(hull, [&](Index u, Index v) { pairs.emplace_back(u, v); return false; });
       for (const auto& [u, v] : pairs) {
         const Crossing_range r = filter.crossing_range(u, v, a, b);
+        CHECK(!(r.misses_segment() && r.in_from < r.in_to)); // a miss claims no crossing
         for (int i = 0; i <= 16; ++i) {
           const double l = i / 16.0;
           const bool certainly_in = r.in_from < l && l < r.in_to, certainly_out = l < r.low || l > r.high;

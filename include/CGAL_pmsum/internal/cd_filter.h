@@ -436,8 +436,8 @@ public:
     clip(m_static.normals[v]);
     for (int i = 0; i < 3 && !r.misses_segment(); ++i)
       for (int j = 0; j < 3 && !r.misses_segment(); ++j) clip(cross(A[(i + 1) % 3] - A[i], B[(j + 1) % 3] - B[j]));
-    if (r.misses_segment()) return r;
-    if (!inside_known) { r.in_from = HUGE_VAL; r.in_to = -HUGE_VAL; }
+    // Certain crossings need every axis clipped (a miss stops early).
+    if (!inside_known || r.misses_segment()) { r.in_from = HUGE_VAL; r.in_to = -HUGE_VAL; }
     return r;
   }
 

@@ -276,7 +276,7 @@ private:
       Crossing_range range;
       if (hop == 0 && start) {
         range = m_filter.crossing_range(start->first, start->second, a, b);
-        if (range.in_from < 0) hit = start;
+        if (range.in_from < 0 && range.in_to > 0) hit = start;
       }
       if (!hit) {
         m_filter.set_point(s.at(at), m_directions, m_count, on_gap ? &m_forward : nullptr);
