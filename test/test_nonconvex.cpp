@@ -352,11 +352,8 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
       }
       const Translation_segment s(ends[0], ends[1]);
       const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
-      Vec3<Interval> hull;
-      for (int c = 0; c < 3; ++c)
-        hull[c] = Interval((std::min)(a[c].inf(), b[c].inf()), (std::max)(a[c].sup(), b[c].sup()));
       std::vector<std::pair<Index, Index>> pairs;
-      filter.for_each_overlapping_pair(hull, [&](Index u, Index v) { pairs.emplace_back(u, v); return false; });
+      filter.for_each_overlapping_pair(hull(a, b), [&](Index u, Index v) { pairs.emplace_back(u, v); return false; });
       for (const auto& [u, v] : pairs) {
         const Crossing_range r = filter.crossing_range(u, v, a, b);
         CHECK(!(r.misses_segment() && r.in_from < r.in_to)); // a miss claims no crossing

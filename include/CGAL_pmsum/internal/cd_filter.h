@@ -219,6 +219,14 @@ inline Vec3<Interval> enclosure(const Exact_point& x)
           Interval(CGAL::to_interval(x.X[2])) / w};
 }
 
+/// The smallest box holding the boxes a and b.
+inline Vec3<Interval> hull(const Vec3<Interval>& a, const Vec3<Interval>& b)
+{
+  Vec3<Interval> h;
+  for (int c = 0; c < 3; ++c) h[c] = Interval((std::min)(a[c].inf(), b[c].inf()), (std::max)(a[c].sup(), b[c].sup()));
+  return h;
+}
+
 /// The orientation predicate of four moving points is affine in the translation t:
 /// det[b - a, c - a, d - a] = D(0) + g.t. Its gradient g = (sb - sa) u2 x u3 +
 /// (sc - sa) u3 x u1 + (sd - sa) u1 x u2, with u1 = b - a, u2 = c - a, u3 = d - a at t = 0.

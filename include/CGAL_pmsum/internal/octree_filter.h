@@ -365,15 +365,15 @@ public:
   std::optional<Key> leaf(const Point3& x) const
   {
     if (!m_enabled) return std::nullopt;
-    Key key = 0;
+    std::array<Key, 3> cell;
     for (int c = 0; c < 3; ++c) {
-      const double f = (x[c] - m_origin[c]) / m_h;
-      const double cell = std::floor(f);
+      const double f = grid(x[c], c);
+      const double floor = std::floor(f);
       const double margin = m_tol / m_h;
-      if (!(cell >= 0 && cell < double(1 << 21)) || f - cell < margin || cell + 1 - f < margin) return std::nullopt;
-      key |= Key(cell) << (21 * c);
+      if (!in_grid(floor) || f - floor < margin || floor + 1 - f < margin) return std::nullopt;
+      cell[c] = Key(floor);
     }
-    return key;
+    return key(cell[0], cell[1], cell[2]);
   }
 
   /// Certifies the given leaves (sorted, unique), top-down over the octree levels.
@@ -386,7 +386,7 @@ public:
     for (Key k : alive) all |= k;
     int top = 0;
     for (int c = 0; c < 3; ++c)
-      while ((((all >> (21 * c)) & mask) >> top) != 0) ++top;
+      while ((coordinate(all, c) >> top) != 0) ++top;
     for (int level = top; level >= 0 && !alive.empty(); --level) {
       std::vector<Key> nodes(alive.size());
       for (std::size_t i = 0; i < alive.size(); ++i) nodes[i] = node(alive[i], level);
@@ -399,7 +399,7 @@ public:
       const double rho = 0.5 * std::sqrt(3.0) * (size + 2 * m_tol) * (1 + 1e-9) + m_tol;
       for_each_index(unique.size(), parallel, [&](std::size_t i) {
         Point3 c;
-        for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double((unique[i] >> (21 * a)) & mask) + 0.5);
+        for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double(coordinate(unique[i], a)) + 0.5);
         ok[i] = m_cert->certifies(c, rho);
       });
       std::vector<Key> next;
@@ -421,15 +421,15 @@ public:
     if (!m_enabled || m_certified.empty()) return false;
     std::array<Key, 3> first, last;
     for (int c = 0; c < 3; ++c) {
-      const double a = std::floor((lo[c] - m_tol - m_origin[c]) / m_h), b = std::floor((hi[c] + m_tol - m_origin[c]) / m_h);
-      if (!(a >= 0 && b < double(1 << 21) && b - a < 8)) return false;
+      const double a = std::floor(grid(lo[c] - m_tol, c)), b = std::floor(grid(hi[c] + m_tol, c));
+      if (!(in_grid(a) && in_grid(b) && b - a < 8)) return false;
       first[c] = Key(a);
       last[c] = Key(b);
     }
     for (Key i = first[0]; i <= last[0]; ++i)
       for (Key j = first[1]; j <= last[1]; ++j)
         for (Key k = first[2]; k <= last[2]; ++k)
-          if (!std::binary_search(m_certified.begin(), m_certified.end(), i | (j << 21) | (k << 42))) return false;
+          if (!std::binary_search(m_certified.begin(), m_certified.end(), key(i, j, k))) return false;
     return true;
   }
 
@@ -445,13 +445,15 @@ public:
   std::size_t number_of_certified_leaves() const { return m_certified.size(); }
 
 private:
+  // A cell's key packs its three 21-bit coordinates.
   static constexpr Key mask = (Key(1) << 21) - 1;
+  static Key key(Key i, Key j, Key k) { return i | (j << 21) | (k << 42); }
+  static Key coordinate(Key key, int c) { return (key >> (21 * c)) & mask; }
+  static bool in_grid(double cell) { return cell >= 0 && cell < double(1 << 21); }
+  /// Coordinate x along axis c in units of leaf cells from the grid's origin.
+  double grid(double x, int c) const { return (x - m_origin[c]) / m_h; }
   static Key node(Key leaf, int level)
-  {
-    Key n = 0;
-    for (int c = 0; c < 3; ++c) n |= (((leaf >> (21 * c)) & mask) >> level) << (21 * c);
-    return n;
-  }
+  { return key(coordinate(leaf, 0) >> level, coordinate(leaf, 1) >> level, coordinate(leaf, 2) >> level); }
 
   const Interior_certificate* m_cert;
   Point3 m_origin{};

@@ -109,8 +109,10 @@ public:
     m_directions = directions;
     m_count = count;
     for (int c = 0; c < 3; ++c) m_forward[c] = s.b.X[c] - s.a.X[c];
+    m_a = enclosure(s.a);
+    m_b = enclosure(s.b);
     // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
-    if (certainly_covered(s, witnesses)) { ++m_stats.interval_exits; return; }
+    if (certainly_covered(witnesses)) { ++m_stats.interval_exits; return; }
     if (covered_by_hops(s, witnesses[0])) { ++m_stats.quick_exits; return; }
     if (one_pair_covers(s, witnesses)) { ++m_stats.quick_exits; return; }
 
@@ -169,6 +171,7 @@ public:
     }
   }
 
+private:
   /// Does one item pair cross at both ends of s (perturbed along the directions, then the
   /// axes)? Then it crosses on all of s (see the file comment), where nothing is free.
   /// Fills m_pairs with the item pairs that may cross on s, and m_ranges with what is known
@@ -185,15 +188,11 @@ public:
     };
     for (const auto& pair : {witnesses[0], witnesses[1], m_last_quick, m_filter.last_crossing()})
       if (pair && crosses_at_both_ends(*pair)) { m_last_quick = pair; return true; }
-    const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
-    Vec3<Interval> hull;
-    for (int c = 0; c < 3; ++c)
-      hull[c] = Interval((std::min)(a[c].inf(), b[c].inf()), (std::max)(a[c].sup(), b[c].sup()));
     m_pairs.clear();
     m_ranges.clear();
     bool found = false;
-    m_filter.for_each_overlapping_pair(hull, [&](Index u, Index v) {
-      const Crossing_range range = m_filter.crossing_range(u, v, a, b);
+    m_filter.for_each_overlapping_pair(hull(m_a, m_b), [&](Index u, Index v) {
+      const Crossing_range range = m_filter.crossing_range(u, v, m_a, m_b);
       if (range.misses_segment()) return false;
       m_pairs.emplace_back(u, v);
       m_ranges.push_back(range);
@@ -205,7 +204,6 @@ public:
     return found;
   }
 
-private:
   /// Drops from m_pairs the pairs whose crossings cannot change the union of all crossings:
   /// C, the union of the intervals where some pair certainly crosses, is covered by a few of
   /// those pairs (greedily), which are kept; a pair that can only cross inside one component
@@ -252,12 +250,11 @@ private:
 
   /// Do intervals alone show that the witnesses' crossings cover s (Cd_filter::
   /// crossing_range(): the first from 0, the second up to 1, meeting)?
-  bool certainly_covered(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses) const
+  bool certainly_covered(const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses) const
   {
-    const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
     std::array<Crossing_range, 2> r; // nothing known without a witness
     for (int k = 0; k < 2; ++k)
-      if (witnesses[k]) r[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, a, b);
+      if (witnesses[k]) r[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, m_a, m_b);
     return r[0].covers_segment() || r[1].covers_segment() ||
            (r[0].in_from < 0 && r[1].in_to > 1 && r[0].in_to > r[1].in_from);
   }
@@ -268,14 +265,13 @@ private:
   /// crosses at both ends. The first run is `start`'s if intervals show it crosses at 0.
   bool covered_by_hops(const Translation_segment& s, const std::optional<std::pair<Index, Index>>& start)
   {
-    const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
     Segment_parameter at = Segment_parameter::zero();
     bool on_gap = false; // the element: the point `at`, or the open interval just after it
     for (int hop = 0; hop < 16; ++hop) {
       std::optional<std::pair<Index, Index>> hit;
       Crossing_range range;
       if (hop == 0 && start) {
-        range = m_filter.crossing_range(start->first, start->second, a, b);
+        range = m_filter.crossing_range(start->first, start->second, m_a, m_b);
         if (range.in_from < 0 && range.in_to > 0) hit = start;
       }
       if (!hit) {
@@ -283,7 +279,7 @@ private:
         if (m_filter.is_free_here()) return false;
         hit = m_filter.last_crossing();
         if (!hit || !m_filter.pair_crosses_here(hit->first, hit->second)) return false; // containment
-        range = m_filter.crossing_range(hit->first, hit->second, a, b);
+        range = m_filter.crossing_range(hit->first, hit->second, m_a, m_b);
       }
       if (range.in_to > 1) return true; // crosses from here (convex) up to the point 1
       const std::vector<Segment_parameter> local = pair_roots(s, hit->first, hit->second);
@@ -311,7 +307,6 @@ private:
   std::vector<Segment_parameter> pair_roots(const Translation_segment& s, Index u, Index v) const
   {
     std::vector<Segment_parameter> r = {Segment_parameter::zero()};
-    const Vec3<Interval> ia = enclosure(s.a), ib = enclosure(s.b);
     m_filter.for_each_predicate(u, v, [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
                                           const Moving_point& d) {
       // D(x) = D(0) + g.x at the ends: no root inside if both certainly have the same sign.
@@ -319,7 +314,7 @@ private:
         CGAL::Protect_FPU_rounding<true> guard;
         const Interval d0 = value_at_origin<Interval>(a, b, c, d);
         const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
-        const Interval da = d0 + dot(g, ia), db = d0 + dot(g, ib);
+        const Interval da = d0 + dot(g, m_a), db = d0 + dot(g, m_b);
         if ((da.inf() > 0 && db.inf() > 0) || (da.sup() < 0 && db.sup() < 0)) return;
         if ((da.inf() == 0 && da.sup() == 0) || (db.inf() == 0 && db.sup() == 0)) return; // zero at an end
       }
@@ -379,6 +374,7 @@ private:
   const Direction* m_directions = nullptr;
   std::uint32_t m_count = 0;
   Vec3<Exact_nt> m_forward;
+  Vec3<Interval> m_a, m_b; // enclosures of the segment's ends
   std::vector<std::pair<Index, Index>> m_pairs;
   std::vector<Crossing_range> m_ranges;
   std::optional<std::pair<Index, Index>> m_last_quick; // the pair of the last quick exit

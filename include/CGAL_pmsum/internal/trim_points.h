@@ -297,6 +297,14 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     if (!exact[k]) exact[k] = exact_sum(P, lattice.p(k), Q, lattice.q(k));
     return *exact[k];
   };
+  std::vector<std::optional<Point3>> rounded(lattice.size()); // the same, rounded
+  auto position = [&](std::uint32_t k) -> const Point3& {
+    if (!rounded[k]) {
+      rounded[k].emplace();
+      for (int c = 0; c < 3; ++c) (*rounded[k])[c] = sum_coordinate<double>(P, Q, lattice.p(k), lattice.q(k), nullptr, c);
+    }
+    return *rounded[k];
+  };
   const Direction* directions = pairs.directions.data() + fp.first_direction;
   const double radius = (std::max)(0., d - lattice.diameter());
   std::vector<Segment_parameter> ends;
@@ -306,10 +314,8 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     if (ca.status == Corner::inside && cb.status == Corner::inside) {
       Point3 lo, hi;
       for (int c = 0; c < 3; ++c) {
-        const double xa = sum_coordinate<double>(P, Q, lattice.p(a), lattice.q(a), nullptr, c);
-        const double xb = sum_coordinate<double>(P, Q, lattice.p(b), lattice.q(b), nullptr, c);
-        lo[c] = (std::min)(xa, xb);
-        hi[c] = (std::max)(xa, xb);
+        lo[c] = (std::min)(position(a)[c], position(b)[c]);
+        hi[c] = (std::max)(position(a)[c], position(b)[c]);
       }
       if (certified_box(lo, hi)) continue;
     }
