@@ -28,13 +28,8 @@
 #ifndef CGAL_PMSUM_INTERNAL_CD_FILTER_H
 #define CGAL_PMSUM_INTERNAL_CD_FILTER_H
 
-#include <CGAL_pmsum/internal/bvh.h>
 #include <CGAL_pmsum/internal/normal_filter.h>
-
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Bbox_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL_pmsum/internal/perturbed_predicates.h>
 
 #include <memory>
 #include <optional>
@@ -43,144 +38,6 @@
 namespace CGAL {
 namespace Pmsum {
 namespace internal {
-
-using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-/// AABB tree primitive: one triangle of a mesh, by index.
-struct Triangle_primitive
-{
-  using Id = Index;
-  using Point = Epick::Point_3;
-  using Datum = Epick::Triangle_3;
-  using Input = std::vector<std::pair<Index, Datum>>::const_iterator;
-
-  Triangle_primitive(Input it) : m_id(it->first), m_triangle(it->second) {}
-  Id id() const { return m_id; }
-  const Datum& datum() const { return m_triangle; }
-  Point reference_point() const { return m_triangle[0]; }
-
-private:
-  Id m_id;
-  Datum m_triangle;
-};
-
-using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Triangle_primitive>>;
-
-/// A mesh with its trees, in a given frame (its coordinates, or their negation).
-struct Tree_mesh
-{
-  const Mesh_data* mesh;
-  std::vector<std::array<double, 3>> base; // coordinates in this frame
-  std::vector<std::pair<Index, Epick::Triangle_3>> triangles;
-  Triangle_tree tree;                      // triangles, for the rays of point-in-solid tests
-  // Hierarchy of the triangles and bare edges, for surface crossings: item i < number of
-  // triangles is triangle i, item number_of_triangles() + k is bare edge bare_edges[k].
-  Bvh items;
-  std::vector<Vec3<Interval>> normals;     // (b - a) x (c - a) of each triangle, enclosed
-  CGAL::Bbox_3 closed_box;                 // bounding box of the closed components
-  bool has_closed = false;
-  // Ray direction of the point-in-solid test. Any direction works: a triangle parallel to
-  // it is skipped, and for every other triangle the perturbed predicates are not zero.
-  static constexpr std::array<double, 3> ray = {1.0, 0.7548776662466927, 0.5698402909980532};
-
-  Tree_mesh(const Mesh_data& m, bool reflect) : mesh(&m)
-  {
-    for (const auto& p : m.points)
-      base.push_back(reflect ? std::array<double, 3>{-p[0], -p[1], -p[2]} : p);
-    auto pt = [&](Index v) { return Epick::Point_3(base[v][0], base[v][1], base[v][2]); };
-    for (Index t = 0; t < m.number_of_triangles(); ++t) {
-      const auto& tri = m.triangles[t];
-      triangles.emplace_back(t, Epick::Triangle_3(pt(tri[0]), pt(tri[1]), pt(tri[2])));
-      if (m.triangle_is_closed(t)) {
-        closed_box += triangles.back().second.bbox();
-        has_closed = true;
-      }
-    }
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      for (const auto& tri : m.triangles) {
-        const Vec3<Interval> a = to_nt<Interval>(base[tri[0]]);
-        normals.push_back(cross(to_nt<Interval>(base[tri[1]]) - a, to_nt<Interval>(base[tri[2]]) - a));
-      }
-    }
-    std::vector<CGAL::Bbox_3> boxes;
-    for (const auto& t : triangles) boxes.push_back(t.second.bbox());
-    for (Index e : m.bare_edges) boxes.push_back(edge_box(e));
-    items = Bvh(boxes);
-    if (triangles.empty()) return; // a polyline: bare edges only
-    tree.insert(triangles.cbegin(), triangles.cend());
-    tree.build();
-  }
-
-  /// Is item i (of `items`) a bare edge? Then it is edge bare_edges[i - number of triangles].
-  bool is_edge(Index i) const { return i >= triangles.size(); }
-  Index edge(Index i) const { return mesh->bare_edges[i - triangles.size()]; }
-
-  /// Bounding box of the segment of edge e, in this frame.
-  CGAL::Bbox_3 edge_box(Index e) const
-  {
-    const auto& a = base[mesh->edges[e].v[0]];
-    const auto& b = base[mesh->edges[e].v[1]];
-    return CGAL::Bbox_3(a[0], a[1], a[2], a[0], a[1], a[2]) + CGAL::Bbox_3(b[0], b[1], b[2], b[0], b[1], b[2]);
-  }
-
-};
-
-/// Does an edge of triangle E, whose vertices lie on sides `side` of the plane of T, cross
-/// the interior of T? `orientation(a, b, c, d)` is the sign of det[b - a, c - a, d - a],
-/// never zero (generic, perturbed configurations).
-template <class Point, class Orientation>
-bool edge_crosses(const std::array<Point, 3>& E, const std::array<CGAL::Sign, 3>& side,
-                  const std::array<Point, 3>& T, const Orientation& orientation)
-{
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    if (side[i] == side[j]) continue;
-    const CGAL::Sign o1 = orientation(E[i], E[j], T[0], T[1]);
-    const CGAL::Sign o2 = orientation(E[i], E[j], T[1], T[2]);
-    if (o1 != o2) continue;
-    if (orientation(E[i], E[j], T[2], T[0]) == o1) return true;
-  }
-  return false;
-}
-
-/// Does the segment (u, v) cross the interior of triangle T (same `orientation`)?
-template <class Point, class Orientation>
-bool segment_crosses(const std::array<Point, 2>& seg, const std::array<Point, 3>& T, const Orientation& orientation)
-{
-  if (orientation(T[0], T[1], T[2], seg[0]) == orientation(T[0], T[1], T[2], seg[1])) return false;
-  const CGAL::Sign o1 = orientation(seg[0], seg[1], T[0], T[1]);
-  return o1 == orientation(seg[0], seg[1], T[1], T[2]) && o1 == orientation(seg[0], seg[1], T[2], T[0]);
-}
-
-/// AABB tree traversal along a ray from `origin` in direction `dir` (node boxes grown by
-/// `margin`, for conservative double slab tests): on_primitive(id) for every triangle whose
-/// box the ray meets.
-template <class F>
-struct Ray_traversal
-{
-  std::array<double, 3> origin, dir;
-  double margin;
-  F on_primitive;
-  bool go_further() const { return true; }
-  bool hits(const CGAL::Bbox_3& b) const
-  {
-    double tmin = 0, tmax = HUGE_VAL;
-    for (int c = 0; c < 3; ++c) {
-      const double lo = b.min(c) - margin, hi = b.max(c) + margin;
-      if (dir[c] == 0) { if (origin[c] < lo || origin[c] > hi) return false; continue; }
-      double t1 = (lo - origin[c]) / dir[c], t2 = (hi - origin[c]) / dir[c];
-      if (t1 > t2) std::swap(t1, t2);
-      tmin = (std::max)(tmin, t1); tmax = (std::min)(tmax, t2);
-    }
-    return tmin <= tmax;
-  }
-  template <class Query, class Primitive>
-  void intersection(const Query&, const Primitive& p) { if (hits(p.datum().bbox())) on_primitive(p.id()); }
-  template <class Query, class Node>
-  bool do_intersect(const Query&, const Node& node) const { return hits(node.bbox()); }
-};
-template <class F> Ray_traversal(std::array<double, 3>, std::array<double, 3>, double, F) -> Ray_traversal<F>;
 
 /// A point base + shift * t of a CD predicate: base in double coordinates, t the translation.
 struct Moving_point
@@ -233,13 +90,8 @@ inline Vec3<Interval> hull(const Vec3<Interval>& a, const Vec3<Interval>& b)
 template <class NT>
 Vec3<NT> gradient(const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d)
 {
-  const Vec3<NT> pa = to_nt<NT>(*a.base);
-  const Vec3<NT> u1 = to_nt<NT>(*b.base) - pa, u2 = to_nt<NT>(*c.base) - pa, u3 = to_nt<NT>(*d.base) - pa;
-  Vec3<NT> g = {NT(0), NT(0), NT(0)};
-  if (b.shift != a.shift) g = g + scaled(cross(u2, u3), NT(b.shift - a.shift));
-  if (c.shift != a.shift) g = g + scaled(cross(u3, u1), NT(c.shift - a.shift));
-  if (d.shift != a.shift) g = g + scaled(cross(u1, u2), NT(d.shift - a.shift));
-  return g;
+  return orientation_gradient<NT>({to_nt<NT>(*a.base), to_nt<NT>(*b.base), to_nt<NT>(*c.base), to_nt<NT>(*d.base)},
+                                  {a.shift, b.shift, c.shift, d.shift});
 }
 
 /// D(0) of the same predicate: the orientation of the four base points.
@@ -293,8 +145,10 @@ struct Cd_geometry
 };
 
 /// One thread's collision tester: the state of the current query and counters.
-class Cd_filter
+class Cd_filter : Perturbed_predicates<Cd_filter, Moving_point>
 {
+  friend class Perturbed_predicates<Cd_filter, Moving_point>;
+
 public:
   explicit Cd_filter(const Cd_geometry* g) // shared, not copied: threads construct their own filter
     : m_p(g->p), m_q(g->q), m_static(g->static_mesh), m_moving(g->moving_mesh), m_margin(g->margin) {}
@@ -458,11 +312,11 @@ private:
     // 2. Is a component of one mesh inside a closed component of the other?
     for (const auto& c : m_moving.mesh->components) {
       const auto& r = m_moving.base[c.representative_vertex];
-      if (inside(m_static, r, +1)) return false;
+      if (inside(m_static, Moving_point{&r, +1})) return false;
     }
     for (const auto& c : m_static.mesh->components) {
       const auto& l = m_static.base[c.representative_vertex];
-      if (inside(m_moving, l, -1)) return false;
+      if (inside(m_moving, Moving_point{&l, -1})) return false;
     }
     return true;
   }
@@ -513,7 +367,8 @@ private:
                         up(b.xmax() + m_x[0].sup()), up(b.ymax() + m_x[1].sup()), up(b.zmax() + m_x[2].sup()));
   }
 
-  // ----- perturbed orientation ---------------------------------------------------------
+  // ----- the points of the perturbed predicates (perturbed_predicates.h) ----------------
+  /// The position of m at the translation x (times S for Exact_nt: see exact_x()).
   template <class NT>
   Vec3<NT> position(const Moving_point& m)
   {
@@ -526,6 +381,12 @@ private:
       return m.shift == 0 ? b : m.shift > 0 ? b + X : b - X;
     }
   }
+
+  /// The position at t = 0 (gradients do not depend on t).
+  template <class NT>
+  static Vec3<NT> frame_position(const Moving_point& m) { return to_nt<NT>(*m.base); }
+
+  static Moving_point fixed_point(const std::array<double, 3>& x) { return {&x, 0}; }
 
   /// Sign of the perturbation terms g.n_1, g.n_2, ..., g.e_x, g.e_y, g.e_z where g is given
   /// by a generic callable g(nt).
@@ -554,19 +415,6 @@ private:
       if (s != CGAL::ZERO) return s;
     }
     throw std::logic_error("CGAL_pmsum: a perturbed predicate is identically zero");
-  }
-
-  /// Sign of orient3d(a, b, c, d) = det[b - a, c - a, d - a] at the perturbed t.
-  CGAL::Sign orientation(const Moving_point& a, const Moving_point& b, const Moving_point& c,
-                         const Moving_point& d)
-  {
-    const CGAL::Sign s0 = filtered_sign([&](auto nt) {
-      using NT = decltype(nt);
-      const Vec3<NT> pa = position<NT>(a);
-      return dot(position<NT>(d) - pa, cross(position<NT>(b) - pa, position<NT>(c) - pa));
-    });
-    if (s0 != CGAL::ZERO) return s0;
-    return perturbation_sign([&](auto nt) { return gradient<decltype(nt)>(a, b, c, d); });
   }
 
   // ----- surface crossing --------------------------------------------------------------
@@ -679,6 +527,7 @@ private:
                             Moving_point{&m_moving.base[tm[2]], 1}});
   }
 
+  using Perturbed_predicates::triangles_cross;
   /// Does triangle t of the moving mesh (translated) cross triangle s of the static mesh?
   bool triangles_cross(Index t, Index s)
   {
@@ -690,12 +539,7 @@ private:
       B[i] = {&m_static.base[ts[i]], 0};
     }
     if (separated_by_a_plane(t, s, m_x)) return false;
-    std::array<CGAL::Sign, 3> sa, sb; // sides of A's points w.r.t. B's plane, and reverse
-    for (int i = 0; i < 3; ++i) sa[i] = orientation(B[0], B[1], B[2], A[i]);
-    if (sa[0] == sa[1] && sa[1] == sa[2]) return false;
-    for (int i = 0; i < 3; ++i) sb[i] = orientation(A[0], A[1], A[2], B[i]);
-    if (sb[0] == sb[1] && sb[1] == sb[2]) return false;
-    return edge_crosses(A, sa, B) || edge_crosses(B, sb, A);
+    return triangles_cross(A, B);
   }
 
   /// Quick exit of triangles_cross(): are all vertices of one triangle certainly strictly
@@ -734,88 +578,15 @@ private:
             Moving_point{&m_static.base[ts[2]], 0}};
   }
 
-  /// Does the segment (u, v) cross the interior of triangle T (one moving, one static)?
-  bool segment_crosses(const std::array<Moving_point, 2>& seg, const std::array<Moving_point, 3>& T)
-  {
-    return internal::segment_crosses(seg, T, [this](const auto&... p) { return orientation(p...); });
-  }
-
-  bool edge_crosses(const std::array<Moving_point, 3>& E, const std::array<CGAL::Sign, 3>& side,
-                    const std::array<Moving_point, 3>& T)
-  {
-    return internal::edge_crosses(E, side, T, [this](const auto&... p) { return orientation(p...); });
-  }
-
   // ----- containment -------------------------------------------------------------------
-  /// Is the point z = base + shift * t inside the closed components of `solid` (in the
-  /// solid's frame)? Ray parity along solid.ray.
-  bool inside(const Tree_mesh& solid, const std::array<double, 3>& base, int shift)
+  /// Is the point z inside the closed components of `solid` (in the solid's frame)?
+  bool inside(const Tree_mesh& solid, const Moving_point& z)
   {
-    if (!solid.has_closed) return false;
     m_perturbed = false; // see decided_without_perturbation()
-    // Conservative box of z.
-    std::array<double, 3> lo, hi;
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      for (int c = 0; c < 3; ++c) {
-        const Interval z = Interval(base[c]) + (shift > 0 ? m_x[c] : shift < 0 ? -m_x[c] : Interval(0));
-        lo[c] = z.inf(); hi[c] = z.sup();
-      }
-    }
-    const CGAL::Bbox_3& cb = solid.closed_box;
-    for (int c = 0; c < 3; ++c)
-      if (hi[c] < cb.min(c) || lo[c] > cb.max(c)) return false;
+    if (!may_be_inside(solid, z)) return false;
     ++m_stats.containment_tests;
-
-    const Moving_point z{&base, shift};
-    const std::array<double, 3>& w = solid.ray;
-    std::array<double, 3> origin;
-    for (int c = 0; c < 3; ++c) origin[c] = 0.5 * (lo[c] + hi[c]);
-    bool odd = false;
-    Ray_traversal traversal{origin, w, m_margin, [&](Index s) {
-                              if (solid.mesh->triangle_is_closed(s) && ray_crosses(solid, s, z)) odd = !odd;
-                              return false;
-                            }};
-    solid.tree.traversal(0, traversal);
-    return odd;
+    return ray_parity(solid, z, m_margin);
   }
-
-  /// Does the ray z + s w, s > 0, cross triangle s of `solid` (z perturbed, generic)?
-  bool ray_crosses(const Tree_mesh& solid, Index s, const Moving_point& z)
-  {
-    const auto& tri = solid.mesh->triangles[s];
-    const std::array<Moving_point, 3> T = {Moving_point{&solid.base[tri[0]], 0},
-                                           Moving_point{&solid.base[tri[1]], 0},
-                                           Moving_point{&solid.base[tri[2]], 0}};
-    const std::array<double, 3>& w = solid.ray;
-    const CGAL::Sign toward = filtered_sign([&](auto nt) {
-      using NT = decltype(nt);
-      const Vec3<NT> a = to_nt<NT>(*T[0].base);
-      return dot(to_nt<NT>(w), cross(to_nt<NT>(*T[1].base) - a, to_nt<NT>(*T[2].base) - a));
-    });
-    if (toward == CGAL::ZERO) return false; // ray parallel to the plane, z not on it
-    if (orientation(T[0], T[1], T[2], z) != -toward) return false; // z must be behind the plane
-    // The line z + s w must pass through the triangle: det[w, a - z, b - z] of equal signs.
-    CGAL::Sign first = CGAL::ZERO;
-    for (int i = 0; i < 3; ++i) {
-      const Moving_point& a = T[i];
-      const Moving_point& b = T[(i + 1) % 3];
-      CGAL::Sign si = filtered_sign([&](auto nt) {
-        using NT = decltype(nt);
-        const Vec3<NT> pz = position<NT>(z);
-        return dot(to_nt<NT>(w), cross(position<NT>(a) - pz, position<NT>(b) - pz));
-      });
-      if (si == CGAL::ZERO) // f(z) = w.(a x b) + z.(w x (b - a)): g = shift * w x (b - a)
-        si = perturbation_sign([&](auto nt) {
-          using NT = decltype(nt);
-          return scaled(cross(to_nt<NT>(w), to_nt<NT>(*b.base) - to_nt<NT>(*a.base)), NT(z.shift));
-        });
-      if (i == 0) first = si;
-      else if (si != first) return false;
-    }
-    return true;
-  }
-
 
   const Mesh_data* m_p;
   const Mesh_data* m_q;

@@ -27,8 +27,8 @@
 // edges' parallelograms.) Every predicate is an orientation determinant of four points of
 // the form base + shift * delta (base: a vertex of Q, or a vertex of P plus a or b, exactly),
 // which is affine in delta; its sign is that of the first non-zero term of
-// (D(0), g.v_1, g.v_2, ...), computed exactly (interval filter, then CGAL::Mpzf), as in the
-// CD filter of the core (cd_filter.h). With the axes at the end of the chain no needed
+// (D(0), g.v_1, g.v_2, ...), computed exactly by the predicates that the CD filter of the
+// core uses too (perturbed_predicates.h). With the axes at the end of the chain no needed
 // predicate is zero, so the configuration is generic and
 //     (P + s + delta) meets Q  <=>  a piece crosses a triangle of Q,
 //                                   or a vertex of each component of Q is in P + s + delta
@@ -39,7 +39,7 @@
 #ifndef CGAL_PMSUM_INTERNAL_SWEPT_CD_H
 #define CGAL_PMSUM_INTERNAL_SWEPT_CD_H
 
-#include <CGAL_pmsum/internal/cd_filter.h>
+#include <CGAL_pmsum/internal/perturbed_predicates.h>
 
 #include <array>
 #include <cmath>
@@ -59,10 +59,21 @@ struct Swept_cd_statistics
   std::size_t containment_tests = 0;
 };
 
+/// The point *p + tsign * (*t) (t may be null), moved by shift * delta.
+struct Swept_point
+{
+  const std::array<double, 3>* p;
+  const std::array<double, 3>* t;
+  int tsign;
+  int shift;
+};
+
 /// Exact test "P moved along [a, b], perturbed by delta, misses Q" (see the file comment).
 /// Holds its own AABB trees of P and Q; one object per thread.
-class Swept_cd
+class Swept_cd : Perturbed_predicates<Swept_cd, Swept_point>
 {
+  friend class Perturbed_predicates<Swept_cd, Swept_point>;
+
 public:
   using Point = std::array<double, 3>;
 
@@ -140,15 +151,6 @@ public:
   }
 
 private:
-  /// The point *p + tsign * (*t) (t may be null), moved by shift * delta.
-  struct Swept_point
-  {
-    const Point* p;
-    const Point* t;
-    int tsign;
-    int shift;
-  };
-
   Swept_point robot(Index v, const Point* off) const { return {&m_p.base[v], off, +1, +1}; }
 
   std::array<Swept_point, 3> triangle(const Tree_mesh& m, Index s, const Point* off, int shift) const
@@ -158,6 +160,7 @@ private:
             Swept_point{&m.base[tr[2]], off, 1, shift}};
   }
 
+  // ----- the points of the perturbed predicates (perturbed_predicates.h) ----------------
   template <class NT>
   static Vec3<NT> position(const Swept_point& x)
   {
@@ -165,6 +168,23 @@ private:
     if (!x.t) return p;
     const Vec3<NT> t = to_nt<NT>(*x.t);
     return x.tsign > 0 ? p + t : p - t;
+  }
+  template <class NT>
+  static Vec3<NT> frame_position(const Swept_point& x) { return position<NT>(x); }
+  static Swept_point fixed_point(const Point& x) { return {&x, nullptr, 1, 0}; }
+
+  /// Sign of the first non-zero g.v over the chain (its last vectors: the axes).
+  template <class G>
+  CGAL::Sign perturbation_sign(const G& g)
+  {
+    for (const Point& v : m_chain) {
+      const CGAL::Sign s = filtered_sign([&](auto nt) {
+        using NT = decltype(nt);
+        return dot(g(nt), to_nt<NT>(v));
+      });
+      if (s != CGAL::ZERO) return s;
+    }
+    throw std::logic_error("CGAL_pmsum: a perturbed predicate of the segment test is identically zero");
   }
 
   /// Is the edge (v0, v1) of P parallel to b - a (exactly)?
@@ -212,130 +232,12 @@ private:
     return hit;
   }
 
-  // ----- perturbed orientation (as in Cd_filter) ----------------------------------------
-  CGAL::Sign orientation(const Swept_point& a, const Swept_point& b, const Swept_point& c, const Swept_point& d)
-  {
-    const CGAL::Sign s0 = filtered_sign([&](auto nt) {
-      using NT = decltype(nt);
-      const Vec3<NT> pa = position<NT>(a);
-      return dot(position<NT>(d) - pa, cross(position<NT>(b) - pa, position<NT>(c) - pa));
-    });
-    if (s0 != CGAL::ZERO) return s0;
-    // D(delta) = D(0) + g.delta, g = (sb-sa) u2 x u3 + (sc-sa) u3 x u1 + (sd-sa) u1 x u2.
-    auto g = [&](auto nt) {
-      using NT = decltype(nt);
-      const Vec3<NT> pa = position<NT>(a);
-      const Vec3<NT> u1 = position<NT>(b) - pa, u2 = position<NT>(c) - pa, u3 = position<NT>(d) - pa;
-      Vec3<NT> r = {NT(0), NT(0), NT(0)};
-      if (b.shift != a.shift) r = r + scaled(cross(u2, u3), NT(b.shift - a.shift));
-      if (c.shift != a.shift) r = r + scaled(cross(u3, u1), NT(c.shift - a.shift));
-      if (d.shift != a.shift) r = r + scaled(cross(u1, u2), NT(d.shift - a.shift));
-      return r;
-    };
-    return perturbation_sign(g);
-  }
-
-  template <class G>
-  CGAL::Sign perturbation_sign(const G& g)
-  {
-    for (const Point& v : m_chain) {
-      const CGAL::Sign s = filtered_sign([&](auto nt) {
-        using NT = decltype(nt);
-        return dot(g(nt), to_nt<NT>(v));
-      });
-      if (s != CGAL::ZERO) return s;
-    }
-    throw std::logic_error("CGAL_pmsum: a perturbed predicate of the segment test is identically zero");
-  }
-
-  bool triangles_cross(const std::array<Swept_point, 3>& A, const std::array<Swept_point, 3>& B)
-  {
-    std::array<CGAL::Sign, 3> sa, sb;
-    for (int i = 0; i < 3; ++i) sa[i] = orientation(B[0], B[1], B[2], A[i]);
-    if (sa[0] == sa[1] && sa[1] == sa[2]) return false;
-    for (int i = 0; i < 3; ++i) sb[i] = orientation(A[0], A[1], A[2], B[i]);
-    if (sb[0] == sb[1] && sb[1] == sb[2]) return false;
-    return edge_crosses(A, sa, B) || edge_crosses(B, sb, A);
-  }
-
-  bool edge_crosses(const std::array<Swept_point, 3>& E, const std::array<CGAL::Sign, 3>& side,
-                    const std::array<Swept_point, 3>& T)
-  {
-    return internal::edge_crosses(E, side, T, [this](const auto&... p) { return orientation(p...); });
-  }
-
-  bool segment_crosses(const std::array<Swept_point, 2>& seg, const std::array<Swept_point, 3>& T)
-  {
-    return internal::segment_crosses(seg, T, [this](const auto&... p) { return orientation(p...); });
-  }
-
-  // ----- containment: ray parity (as in Cd_filter::inside) ---------------------------
   bool inside(const Tree_mesh& solid, const Swept_point& z)
   {
-    if (!solid.has_closed) return false;
-    const CGAL::Bbox_3 zb = conservative_box(std::array<Swept_point, 1>{z});
-    const CGAL::Bbox_3& cb = solid.closed_box;
-    for (int c = 0; c < 3; ++c)
-      if (zb.max(c) < cb.min(c) || zb.min(c) > cb.max(c)) return false;
+    if (!may_be_inside(solid, z)) return false;
     ++m_stats.containment_tests;
-    const std::array<double, 3>& w = solid.ray;
-    std::array<double, 3> origin;
-    for (int c = 0; c < 3; ++c) origin[c] = 0.5 * (zb.min(c) + zb.max(c));
-    bool odd = false;
-    Ray_traversal traversal{origin, w, m_margin, [&](Index s) {
-                              if (solid.mesh->triangle_is_closed(s) && ray_crosses(solid, s, z)) odd = !odd;
-                            }};
-    solid.tree.traversal(0, traversal);
-    return odd;
+    return ray_parity(solid, z, m_margin);
   }
-
-  bool ray_crosses(const Tree_mesh& solid, Index s, const Swept_point& z)
-  {
-    const std::array<Swept_point, 3> T = triangle(solid, s, nullptr, 0);
-    const std::array<double, 3>& w = solid.ray;
-    const CGAL::Sign toward = filtered_sign([&](auto nt) {
-      using NT = decltype(nt);
-      const Vec3<NT> a = position<NT>(T[0]);
-      return dot(to_nt<NT>(w), cross(position<NT>(T[1]) - a, position<NT>(T[2]) - a));
-    });
-    if (toward == CGAL::ZERO) return false; // ray parallel to the plane, z (perturbed) not on it
-    if (orientation(T[0], T[1], T[2], z) != -toward) return false;
-    CGAL::Sign first = CGAL::ZERO;
-    for (int i = 0; i < 3; ++i) {
-      const Swept_point& a = T[i];
-      const Swept_point& b = T[(i + 1) % 3];
-      CGAL::Sign si = filtered_sign([&](auto nt) {
-        using NT = decltype(nt);
-        const Vec3<NT> pz = position<NT>(z);
-        return dot(to_nt<NT>(w), cross(position<NT>(a) - pz, position<NT>(b) - pz));
-      });
-      if (si == CGAL::ZERO) // f(z) = w.(a x b) + z.(w x (b - a)): g = shift * w x (b - a)
-        si = perturbation_sign([&](auto nt) {
-          using NT = decltype(nt);
-          return scaled(cross(to_nt<NT>(w), position<NT>(b) - position<NT>(a)), NT(z.shift));
-        });
-      if (i == 0) first = si;
-      else if (si != first) return false;
-    }
-    return true;
-  }
-
-  // ----- AABB traversals (the same as Cd_filter's) --------------------------------------
-  template <class F>
-  struct Box_traversal
-  {
-    CGAL::Bbox_3 box;
-    F on_primitive; // returns true to stop
-    bool stop = false;
-    bool go_further() const { return !stop; }
-    template <class Query, class Primitive>
-    void intersection(const Query&, const Primitive& p)
-    { if (CGAL::do_overlap(box, p.datum().bbox())) stop = on_primitive(p.id()); }
-    template <class Query, class Node>
-    bool do_intersect(const Query&, const Node& node) const { return CGAL::do_overlap(box, node.bbox()); }
-  };
-  template <class F> Box_traversal(CGAL::Bbox_3, F) -> Box_traversal<F>;
-
 
   Tree_mesh m_p, m_q;
   double m_scale = 1, m_margin = 0;
