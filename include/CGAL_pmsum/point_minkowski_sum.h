@@ -13,6 +13,7 @@
 //   octree_filter.h  octree cells of candidates certified inside the sum
 //   decision.h       each candidate: reused, certified inner, covered by the net, or CD-tested
 //   cd_filter.h      exact collision test of (-P + x) against Q, symbolically perturbed
+//                    (its predicates: perturbed_predicates.h, shared with swept_cd.h)
 //   covering_net.h   the output: a (d/2, d)-net of the boundary candidates
 //   parallel.h       waves of feature pairs decided in parallel, committed in canonical order
 //   and this file    named parameters, the input stage, and the output records
