@@ -237,6 +237,8 @@ const std::string sum_options_help = input_options_help +
   "                         (d/2, d)-net: many times more points, and slower\n"
   "  --no-trim-points       no points on the trim curves of the convolution facets: faster,\n"
   "                         but passages narrower than the sample spacing may be uncovered\n"
+  "  --islands              also search visible pieces inside one lattice cell (e.g. voids\n"
+  "                         smaller than the sample spacing): exact, slower on fine meshes\n"
   "  --levels D1,D2,...     coarse to fine: first the larger covering distances D1 > D2 > ... > D\n"
   "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
   "                         K to OUT with .levelK before the extension (validate: the last)\n"
@@ -244,7 +246,7 @@ const std::string sum_options_help = input_options_help +
   "  --force                run even if the estimated output exceeds the available memory\n";
 const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
 const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter", "--all-candidates",
-                                            "--no-trim-points", "--force", "--quiet", "--help", "-h"};
+                                            "--no-trim-points", "--islands", "--force", "--quiet", "--help", "-h"};
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
 
@@ -262,7 +264,7 @@ struct Sum_input
   std::string p_path, q_path;
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
-  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, force = false, quiet = false;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, islands = false, force = false, quiet = false;
   int threads = 0; // 0: all cores
   std::vector<double> coarser_d; // --levels: coarser covering distances, coarse to fine (absolute)
 };
@@ -283,6 +285,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.octree_filter = !args.flag("--no-octree-filter");
   in.covering_net = !args.flag("--all-candidates");
   in.trim_points = !args.flag("--no-trim-points");
+  in.islands = args.flag("--islands");
   in.force = args.flag("--force");
   if (args.has("--threads")) {
     const double t = args.number("--threads");
@@ -353,6 +356,7 @@ inline std::vector<Record> compute_sum(
                     .use_octree_filter(in.octree_filter)
                     .use_covering_net(in.covering_net)
                     .use_trim_points(in.trim_points)
+                    .search_islands(in.islands)
                     .negate_first_mesh(in.negate)
                     .statistics(stats)
                     .maximum_number_of_candidates(limit)
@@ -407,7 +411,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
   jq.str("file", in.q_path).integer("vertices", in.Q.number_of_vertices())
     .integer("faces", in.Q.number_of_faces()).integer("samples", stats.samples_q);
   filters.boolean("normal", in.normal_filter).boolean("cd", in.cd_filter).boolean("octree", in.octree_filter)
-    .boolean("covering_net", in.covering_net).boolean("trim_points", in.trim_points);
+    .boolean("covering_net", in.covering_net).boolean("trim_points", in.trim_points).boolean("islands", in.islands);
   Json j;
   const unsigned cores = std::thread::hardware_concurrency();
   j.object("p", jp).object("q", jq).integer("threads", in.threads ? std::size_t(in.threads) : std::size_t(cores ? cores : 1))
@@ -420,7 +424,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
     .integer("containment_tests", stats.containment_tests).integer("corner_tests", stats.corner_tests)
     .integer("trim_queries", stats.trim_queries)
-    .integer("trim_segments", stats.trim_segments).integer("trim_points", stats.trim_points)
+    .integer("trim_segments", stats.trim_segments).integer("island_cells", stats.island_cells).integer("trim_points", stats.trim_points)
     .integer("output_points", stats.output_points);
   return j;
 }

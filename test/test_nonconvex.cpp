@@ -361,7 +361,7 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
           const double l = i / 16.0;
           const bool certainly_in = r.in_from < l && l < r.in_to, certainly_out = l < r.low || l > r.high;
           if (!certainly_in && !certainly_out) continue;
-          filter.set_point(s.at(Segment_parameter{Exact_nt(i), Exact_nt(16)}), nullptr, 0, nullptr);
+          filter.set_point(s.at(Segment_parameter{Exact_nt(i), Exact_nt(16)}), nullptr, 0);
           const bool crosses = filter.pair_crosses_here(u, v);
           ++tested;
           INFO("pair " << u << ", " << v << " at l = " << l);

@@ -26,7 +26,8 @@ struct Statistics
   std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests (CD filter and trim search)
   std::size_t containment_tests = 0;        ///< exact point-in-solid tests (CD filter and trim search)
   std::size_t corner_tests = 0;             ///< CD tests of facet lattice points on the facets' edges (trim search)
-  std::size_t trim_segments = 0;            ///< lattice segments searched for trim-curve points
+  std::size_t trim_segments = 0;            ///< segments searched for trim-curve points (lattice edges and island lines)
+  std::size_t island_cells = 0;             ///< lattice cells searched for islands (visible pieces inside one cell)
   std::size_t trim_queries = 0;             ///< collision tests of the trim search (corner tests and segment searches)
   std::size_t trim_points = 0;              ///< output points on trim curves (between lattice points)
   std::size_t output_points = 0;            ///< the (d/2, d)-net, or every boundary candidate

@@ -24,6 +24,7 @@ enum use_cd_filter_t { use_cd_filter };
 enum use_octree_filter_t { use_octree_filter };
 enum use_covering_net_t { use_covering_net };
 enum use_trim_points_t { use_trim_points };
+enum search_islands_t { search_islands };
 enum negate_first_mesh_t { negate_first_mesh };
 enum statistics_t { statistics };
 enum treat_as_surface_t { treat_as_surface };
@@ -82,6 +83,12 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<bool, internal_np::use_trim_points_t, Named_parameters>
   use_trim_points(bool b) const { return {b, *this}; }
 
+  /// With trim points, also search the islands of the convolution facets (default `false`):
+  /// visible pieces strictly inside one lattice cell, such as a void of the sum smaller than
+  /// the sample spacing (user manual, section 4). Exact; several times slower on fine meshes.
+  Named_parameters<bool, internal_np::search_islands_t, Named_parameters>
+  search_islands(bool b) const { return {b, *this}; }
+
   /// Compute the boundary of (-P) + Q instead of P + Q (default `false`): the contact space
   /// of a robot P translating among obstacles Q.
   Named_parameters<bool, internal_np::negate_first_mesh_t, Named_parameters>
@@ -118,6 +125,10 @@ use_covering_net(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_
 /// \copydoc CGAL::Pmsum::Named_parameters::use_trim_points
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::use_trim_points_t>
 use_trim_points(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::use_trim_points_t>(b); }
+
+/// \copydoc CGAL::Pmsum::Named_parameters::search_islands
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::search_islands_t>
+search_islands(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::search_islands_t>(b); }
 
 /// \copydoc CGAL::Pmsum::Named_parameters::negate_first_mesh
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::negate_first_mesh_t>

@@ -51,15 +51,14 @@ struct Accepts_record<OutputIterator, Record,
                       std::void_t<decltype(*std::declval<OutputIterator&>() = std::declval<const Record&>())>>
   : std::true_type {};
 
-/// Fills the public Mesh_feature of a sample, or of a trim point's part: the point
-/// (1 - lambda) s + lambda `towards`, on feature `origin`.
+/// Fills the public Mesh_feature of a sample s, or of side `side`'s part of the trim point of
+/// `trim` (s: that side's sample of its first corner).
 template <class PolygonMesh>
 Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptors<PolygonMesh>& desc,
-                                          const Sample* towards = nullptr, const CGAL::Exact_rational* lambda = nullptr,
-                                          const Feature* origin = nullptr)
+                                          const Trim* trim = nullptr, int side = 0)
 {
   Mesh_feature<PolygonMesh> f;
-  const Feature o = origin ? *origin : s.origin;
+  const Feature o = trim ? (side == 0 ? trim->origin_p : trim->origin_q) : s.origin;
   f.dimension = o.dimension;
   if (f.dimension == 0) f.vertex = desc.vertices[o.index];
   else if (f.dimension == 1) f.halfedge = desc.edges[o.index];
@@ -69,7 +68,7 @@ Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptor
     f.weights[i] = s.weights[i];
   }
   f.denominator = s.denominator;
-  if (towards) f.rational_weights = trim_weights(s, *towards, *lambda);
+  if (trim) f.rational_weights = trim_weights(s, *trim, side);
   return f;
 }
 
@@ -97,6 +96,7 @@ struct Prepared_sum
     options.use_octree_filter = choose_parameter(get_parameter(np_p, internal_np::use_octree_filter), true);
     options.use_covering_net = choose_parameter(get_parameter(np_p, internal_np::use_covering_net), true);
     options.use_trim_points = choose_parameter(get_parameter(np_p, internal_np::use_trim_points), true);
+    options.search_islands = choose_parameter(get_parameter(np_p, internal_np::search_islands), false);
     options.max_candidates =
       choose_parameter(get_parameter(np_p, internal_np::maximum_number_of_candidates), std::size_t(-1));
     options.callback =
@@ -125,8 +125,7 @@ struct Prepared_sum
         const auto n = direction.template vector<double>(mp, mq);
         const double len = std::sqrt(dot(n, n));
         Record r{x, typename GT::Vector_3(n[0] / len, n[1] / len, n[2] / len),
-                 trim ? to_mesh_feature(sp, desc_p, &trim->p, &trim->lambda, &trim->origin_p) : to_mesh_feature(sp, desc_p),
-                 trim ? to_mesh_feature(sq, desc_q, &trim->q, &trim->lambda, &trim->origin_q) : to_mesh_feature(sq, desc_q),
+                 to_mesh_feature(sp, desc_p, trim, 0), to_mesh_feature(sq, desc_q, trim, 1),
                  negate_p};
         *out++ = r;
       } else {
@@ -175,7 +174,7 @@ struct Prepared_sum
 /// \param d covering distance, > 0
 /// \param np_p named parameters for P and for the algorithm: `vertex_point_map`,
 ///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true), `use_octree_filter` (true),
-///        `use_covering_net` (true), `use_trim_points` (true),
+///        `use_covering_net` (true), `use_trim_points` (true), `search_islands` (false),
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,

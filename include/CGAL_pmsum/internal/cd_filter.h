@@ -178,27 +178,30 @@ public:
     m_sp = m_sq = nullptr;
     m_plain = t;
     m_dirs = nullptr; m_dir_count = 0; m_dir_first = 0;
-    m_prefix = nullptr;
+    m_prefix = {};
     m_exact_x.reset();
     m_x = to_nt<Interval>(t);
     return configuration_is_free();
   }
 
-  /// Sets the query to the exact translation x, perturbed first along `prefix` if given
-  /// (a direction along a segment of translations: the answer is then the one just past x
-  /// on that segment), then along the directions (from directions[0]), then the axes.
-  /// The filter keeps pointers to `directions` and `prefix`.
-  void set_point(const Exact_point& x, const Direction* directions, std::uint32_t count, const Vec3<Exact_nt>* prefix)
+  /// Directions that perturb a query before its own (null ones are skipped).
+  using Prefix = std::array<const Vec3<Exact_nt>*, 2>;
+
+  /// Sets the query to the exact translation x, perturbed first along the prefix's
+  /// directions (e.g. along a segment of translations: the answer is then the one just past
+  /// x on that segment), then along the directions (from directions[0]), then the axes.
+  /// The filter keeps pointers to `directions` and to the prefix's vectors.
+  void set_point(const Exact_point& x, const Direction* directions, std::uint32_t count, const Prefix& prefix = {})
   {
     m_sp = m_sq = nullptr;
     m_dirs = directions; m_dir_count = count; m_dir_first = 0;
     m_exact_x.emplace(x.X, x.W);
     m_x = enclosure(x);
     m_prefix = prefix;
-    if (prefix) {
-      CGAL::Protect_FPU_rounding<true> guard;
-      for (int c = 0; c < 3; ++c) m_prefix_interval[c] = CGAL::to_interval((*prefix)[c]);
-    }
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (std::size_t k = 0; k < prefix.size(); ++k)
+      if (prefix[k])
+        for (int c = 0; c < 3; ++c) m_prefix_interval[k][c] = CGAL::to_interval((*prefix[k])[c]);
   }
 
   /// Is the query set by set_point() free?
@@ -254,30 +257,10 @@ public:
   {
     Crossing_range r;
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
-    const auto& tm = m_moving.mesh->triangles[u];
-    const auto& ts = m_static.mesh->triangles[v];
     CGAL::Protect_FPU_rounding<true> guard;
-    std::array<Vec3<Interval>, 3> A, B;
-    for (int i = 0; i < 3; ++i) {
-      A[i] = to_nt<Interval>(m_moving.base[tm[i]]);
-      B[i] = to_nt<Interval>(m_static.base[ts[i]]);
-    }
     bool inside_known = true;
     r.in_from = -HUGE_VAL; r.in_to = HUGE_VAL;
-    auto clip = [&](const Vec3<Interval>& w) {
-      if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
-        return; // the zero vector: no facet
-      // The polytope's extent along w: [min_k w.B_k - max_i w.A_i, max_k w.B_k - min_i w.A_i].
-      auto extreme = [&](const std::array<Vec3<Interval>, 3>& T, bool maximum) {
-        Interval m = dot(w, T[0]);
-        for (int k = 1; k < 3; ++k) {
-          const Interval x = dot(w, T[k]);
-          m = maximum ? Interval((std::max)(m.inf(), x.inf()), (std::max)(m.sup(), x.sup()))
-                      : Interval((std::min)(m.inf(), x.inf()), (std::min)(m.sup(), x.sup()));
-        }
-        return m;
-      };
-      const Interval lo = extreme(B, false) - extreme(A, true), hi = extreme(B, true) - extreme(A, false);
+    for_each_slab(u, v, [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
       const Interval wa = dot(w, a), wb = dot(w, b), slope = wb - wa;
       if (slope.inf() > 0 || slope.sup() < 0) { // lo < wa + l slope < hi
         const Interval e1 = (lo - wa) / slope, e2 = (hi - wa) / slope;
@@ -287,20 +270,80 @@ public:
         r.high = (std::min)(r.high, leave.sup());
         r.in_from = (std::max)(r.in_from, enter.sup());
         r.in_to = (std::min)(r.in_to, leave.inf());
-        return;
+        return !r.misses_segment();
       }
       // Nearly parallel: w.t(l) is between w.a and w.b.
       const double fl = (std::min)(wa.inf(), wb.inf()), fh = (std::max)(wa.sup(), wb.sup());
       if (fh < lo.inf() || fl > hi.sup()) r.low = HUGE_VAL; // misses the slab
       else if (!(fl > lo.sup() && fh < hi.inf())) inside_known = false;
-    };
-    clip(m_moving.normals[u]);
-    clip(m_static.normals[v]);
-    for (int i = 0; i < 3 && !r.misses_segment(); ++i)
-      for (int j = 0; j < 3 && !r.misses_segment(); ++j) clip(cross(A[(i + 1) % 3] - A[i], B[(j + 1) % 3] - B[j]));
+      return !r.misses_segment();
+    });
     // Certain crossings need every axis clipped (a miss stops early).
     if (!inside_known || r.misses_segment()) { r.in_from = HUGE_VAL; r.in_to = -HUGE_VAL; }
     return r;
+  }
+
+  /// Can the pair (u, v) cross at a translation in the triangle T (boxes holding its
+  /// corners)? False only if intervals show that T misses a slab of B - A, or B - A misses
+  /// the plane of T.
+  bool may_cross_in(Index u, Index v, const std::array<Vec3<Interval>, 3>& T) const
+  {
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return true;
+    CGAL::Protect_FPU_rounding<true> guard;
+    bool meets = true;
+    auto test = [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
+      double tl = HUGE_VAL, th = -HUGE_VAL; // T's extent along w
+      for (const auto& x : T) {
+        const Interval wx = dot(w, x);
+        tl = (std::min)(tl, wx.inf());
+        th = (std::max)(th, wx.sup());
+      }
+      return meets = !(th < lo.inf() || tl > hi.sup());
+    };
+    for_each_slab(u, v, test);
+    if (!meets) return false;
+    const Vec3<Interval> n = cross(T[1] - T[0], T[2] - T[0]);
+    return slab(u, v, n, test);
+  }
+
+  /// Calls f(w, lo, hi) for the eleven axes w normal to the facets of B - A (A: moving
+  /// triangle u, B: static triangle v): lo < w.t < hi for every t in B - A (enclosures),
+  /// until f returns false. Needs rounding towards +infinity.
+  template <class F>
+  void for_each_slab(Index u, Index v, const F& f) const
+  {
+    if (!slab(u, v, m_moving.normals[u], f) || !slab(u, v, m_static.normals[v], f)) return;
+    const auto& tm = m_moving.mesh->triangles[u];
+    const auto& ts = m_static.mesh->triangles[v];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const Vec3<Interval> ea = to_nt<Interval>(m_moving.base[tm[(i + 1) % 3]]) - to_nt<Interval>(m_moving.base[tm[i]]);
+        const Vec3<Interval> eb = to_nt<Interval>(m_static.base[ts[(j + 1) % 3]]) - to_nt<Interval>(m_static.base[ts[j]]);
+        if (!slab(u, v, cross(ea, eb), f)) return;
+      }
+  }
+
+  /// f(w, lo, hi) for the extent [lo, hi] of B - A along w (any w: B - A is the convex hull
+  /// of the B_k - A_i): lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i.
+  /// Skips the zero vector (returns true).
+  template <class F>
+  bool slab(Index u, Index v, const Vec3<Interval>& w, const F& f) const
+  {
+    if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
+      return true;
+    auto extreme = [&](const Tree_mesh& m, const std::array<Index, 3>& t, bool maximum) {
+      Interval r = dot(w, to_nt<Interval>(m.base[t[0]]));
+      for (int k = 1; k < 3; ++k) {
+        const Interval x = dot(w, to_nt<Interval>(m.base[t[k]]));
+        r = maximum ? Interval((std::max)(r.inf(), x.inf()), (std::max)(r.sup(), x.sup()))
+                    : Interval((std::min)(r.inf(), x.inf()), (std::min)(r.sup(), x.sup()));
+      }
+      return r;
+    };
+    const auto& tm = m_moving.mesh->triangles[u];
+    const auto& ts = m_static.mesh->triangles[v];
+    return f(w, extreme(m_static, ts, false) - extreme(m_moving, tm, true),
+             extreme(m_static, ts, true) - extreme(m_moving, tm, false));
   }
 
 private:
@@ -327,7 +370,7 @@ private:
   {
     m_sp = &p; m_sq = &q;
     m_dirs = directions; m_dir_count = count; m_dir_first = first;
-    m_prefix = nullptr;
+    m_prefix = {};
     m_exact_x.reset();
     CGAL::Protect_FPU_rounding<true> guard;
     m_x = sample_interval(*m_p, p) + sample_interval(*m_q, q);
@@ -394,11 +437,12 @@ private:
   CGAL::Sign perturbation_sign(const G& g)
   {
     m_perturbed = true;
-    if (m_prefix) {
+    for (std::size_t k = 0; k < m_prefix.size(); ++k) {
+      if (!m_prefix[k]) continue;
       const CGAL::Sign s = filtered_sign([&](auto nt) {
         using NT = decltype(nt);
-        if constexpr (std::is_same<NT, Interval>::value) return dot(g(nt), m_prefix_interval);
-        else return dot(g(nt), *m_prefix);
+        if constexpr (std::is_same<NT, Interval>::value) return dot(g(nt), m_prefix_interval[k]);
+        else return dot(g(nt), *m_prefix[k]);
       });
       if (s != CGAL::ZERO) return s;
     }
@@ -605,8 +649,8 @@ private:
   std::array<double, 3> m_plain{}; // a plain translation (m_sp == nullptr)
   const Direction* m_dirs = nullptr;
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
-  const Vec3<Exact_nt>* m_prefix = nullptr; // set_point(): a first perturbation direction
-  Vec3<Interval> m_prefix_interval;
+  Prefix m_prefix{}; // set_point(): the first perturbation directions
+  std::array<Vec3<Interval>, 2> m_prefix_interval;
   Vec3<Interval> m_x;
   std::optional<std::pair<Vec3<Exact_nt>, Exact_nt>> m_exact_x;
 };

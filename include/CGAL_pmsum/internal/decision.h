@@ -99,12 +99,12 @@ struct Tentative
 struct Decision_counters
 {
   std::size_t reused = 0, certified = 0, covered = 0, tested_in_commit = 0;
-  std::size_t trim_segments = 0, trim_points = 0, corner_tests = 0, trim_queries = 0;
+  std::size_t trim_segments = 0, trim_points = 0, corner_tests = 0, trim_queries = 0, island_cells = 0;
   void add(const Decision_counters& o)
   {
     reused += o.reused; certified += o.certified; covered += o.covered; tested_in_commit += o.tested_in_commit;
     trim_segments += o.trim_segments; trim_points += o.trim_points; corner_tests += o.corner_tests;
-    trim_queries += o.trim_queries;
+    trim_queries += o.trim_queries; island_cells += o.island_cells;
   }
 };
 
@@ -122,6 +122,7 @@ struct Decision_context
   bool keep_vertex_sums = false;       // vertex + vertex boundary points are output even if covered
   bool record_decisions = false;       // coarse to fine: fill Pair_decision::tested
   bool trim_points = true;             // search the trim curves of 2-dimensional pairs (trim_points.h)
+  bool islands = false;                // and the islands inside lattice cells (island_search.h)
   double d = 0;                        // the covering distance
 };
 
@@ -234,9 +235,19 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
     return info;
   };
   Segment_search search(filter);
+  Island_search islands(filter, search);
   const std::size_t before = out.trims.size(), queries_before = filter.statistics().queries;
-  auto certified_box = [&](const Point3& lo, const Point3& hi) { return c.octree && c.octree->certifies_box(lo, hi); };
-  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, certified_box, search, out.trims);
+  // Certified inside the sum: a box, by the octree's leaves; else a ball, by the certificate.
+  auto certified = [&](const Point3& lo, const Point3& hi, bool ball) {
+    if (!c.octree) return false;
+    if (c.octree->certifies_box(lo, hi)) return true;
+    if (!ball) return false;
+    Point3 centre;
+    for (int i = 0; i < 3; ++i) centre[i] = 0.5 * (lo[i] + hi[i]);
+    return c.octree->certifies_ball(centre, 0.5 * std::sqrt(dot(hi - lo, hi - lo)));
+  };
+  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, certified, search, c.islands ? &islands : nullptr, out.trims);
+  counters.island_cells += islands.searched_cells();
   counters.trim_segments += search.statistics().segments;
   counters.trim_points += out.trims.size() - before;
   counters.trim_queries += filter.statistics().queries - queries_before;

@@ -433,6 +433,11 @@ public:
     return true;
   }
 
+  /// Is the ball of centre c and radius rho (doubles, within the rounding margin) inside the
+  /// sum? The certificate's own test, where no leaf is needed.
+  bool certifies_ball(const Point3& c, double rho) const
+  { return m_enabled && m_cert->certifies(c, rho * (1 + 1e-9) + 2 * m_tol); }
+
   /// The leaf of x if it is certified (a convex cell inside the sum).
   std::optional<Key> certified_leaf(const Point3& x) const
   {

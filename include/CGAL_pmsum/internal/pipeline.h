@@ -59,6 +59,7 @@ struct Pipeline_options
   bool use_octree_filter = true; // only with the CD filter
   bool use_covering_net = true;  // only with the CD filter; false: every boundary candidate
   bool use_trim_points = true;   // only with the CD filter: search the trim curves (trim_points.h)
+  bool search_islands = false;   // with trim points: and the islands inside cells (island_search.h)
   bool keep_vertex_sums = false; // with the net: vertex + vertex boundary points too, covered or not
   std::size_t max_candidates = std::size_t(-1);
   std::function<bool(double)> callback; // progress in [0, 1]; false cancels
@@ -178,6 +179,7 @@ public:
     context.keep_vertex_sums = m_o.keep_vertex_sums;
     context.d = d;
     context.trim_points = m_o.use_trim_points;
+    context.islands = m_o.search_islands;
     std::optional<Per_thread<Cd_filter>> filters;
     if (m_geometry) filters.emplace(parallel, &*m_geometry);
     Per_thread<Pair_candidates> candidates(parallel);
@@ -201,6 +203,7 @@ public:
     stats.candidates_certified = commit_counters.certified;
     stats.candidates_covered = commit_counters.covered;
     stats.trim_segments = commit_counters.trim_segments;
+    stats.island_cells = commit_counters.island_cells;
     stats.corner_tests = commit_counters.corner_tests;
     stats.trim_queries = commit_counters.trim_queries;
     if (filters)

@@ -35,14 +35,30 @@
 
 #include <CGAL_pmsum/internal/cd_filter.h>
 
+#include <CGAL/Exact_rational.h>
+
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Pmsum {
 namespace internal {
+
+/// Converts an Mpzf exactly to CGAL::Exact_rational (GMP's mpq_class, or CGAL::Gmpq).
+template <class Q = CGAL::Exact_rational>
+Q to_rational(const Exact_nt& x)
+{
+  if constexpr (std::is_constructible<Q, CGAL::Gmpq>::value) {
+    return Q(CGAL::Gmpq(x));
+  } else {
+    Q r;
+    x.export_to_mpq_t(r.get_mpq_t());
+    return r;
+  }
+}
 
 /// A parameter num / den of a segment, exactly (den > 0).
 struct Segment_parameter
@@ -50,6 +66,7 @@ struct Segment_parameter
   Exact_nt num, den;
   static Segment_parameter zero() { return {Exact_nt(0), Exact_nt(1)}; }
   static Segment_parameter one() { return {Exact_nt(1), Exact_nt(1)}; }
+  CGAL::Exact_rational value() const { return to_rational(num) / to_rational(den); }
 };
 
 inline CGAL::Sign compare(const Segment_parameter& a, const Segment_parameter& b)
@@ -100,14 +117,18 @@ public:
   /// Appends to `ends` the parameters of the ends of the free parts of s (sorted, each free
   /// part giving its first and last parameter, equal for an isolated free point). Points are
   /// perturbed along directions[0], ..., directions[count - 1], then the axes.
-  /// `witnesses`: item pairs known to cross at a or at b, tried first.
+  /// `witnesses`: item pairs known to cross at a or at b, tried first. `side`: if given, every
+  /// point is perturbed first along it (after the segment's own direction on open
+  /// intervals): the free parts are then those of the side of s that it points to.
   void free_ends(const Translation_segment& s, const Direction* directions, std::uint32_t count,
                  std::vector<Segment_parameter>& ends,
-                 const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses = {})
+                 const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses = {},
+                 const Vec3<Exact_nt>* side = nullptr)
   {
     ++m_stats.segments;
     m_directions = directions;
     m_count = count;
+    m_side = side;
     for (int c = 0; c < 3; ++c) m_forward[c] = s.b.X[c] - s.a.X[c];
     m_a = enclosure(s.a);
     m_b = enclosure(s.b);
@@ -181,7 +202,7 @@ private:
     auto crosses_at_both_ends = [&](const std::pair<Index, Index>& pair) {
       for (const Exact_point* x : {&s.a, &s.b}) {
         ++m_stats.pair_tests;
-        m_filter.set_point(*x, m_directions, m_count, nullptr);
+        set_query(*x, false);
         if (!m_filter.pair_crosses_here(pair.first, pair.second)) return false;
       }
       return true;
@@ -275,7 +296,7 @@ private:
         if (range.in_from < 0 && range.in_to > 0) hit = start;
       }
       if (!hit) {
-        m_filter.set_point(s.at(at), m_directions, m_count, on_gap ? &m_forward : nullptr);
+        set_query(s.at(at), on_gap);
         if (m_filter.is_free_here()) return false;
         hit = m_filter.last_crossing();
         if (!hit || !m_filter.pair_crosses_here(hit->first, hit->second)) return false; // containment
@@ -337,7 +358,14 @@ private:
   /// left root.
   void set_element(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)
   {
-    m_filter.set_point(s.at(roots[e / 2]), m_directions, m_count, e % 2 ? &m_forward : nullptr);
+    set_query(s.at(roots[e / 2]), e % 2 == 1);
+  }
+
+  /// Sets the query to x, perturbed first along the segment if `forward`, then to the side
+  /// (if any), then along the directions.
+  void set_query(const Exact_point& x, bool forward)
+  {
+    m_filter.set_point(x, m_directions, m_count, {forward ? &m_forward : m_side, forward ? m_side : nullptr});
   }
 
   bool free_at(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)
@@ -374,6 +402,7 @@ private:
   const Direction* m_directions = nullptr;
   std::uint32_t m_count = 0;
   Vec3<Exact_nt> m_forward;
+  const Vec3<Exact_nt>* m_side = nullptr;
   Vec3<Interval> m_a, m_b; // enclosures of the segment's ends
   std::vector<std::pair<Index, Index>> m_pairs;
   std::vector<Crossing_range> m_ranges;

@@ -26,6 +26,7 @@
 #define CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
 
 #include <CGAL_pmsum/internal/candidates.h>
+#include <CGAL_pmsum/internal/island_search.h>
 #include <CGAL_pmsum/internal/segment_search.h>
 
 #include <CGAL/Exact_rational.h>
@@ -34,7 +35,8 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <set>
+#include <initializer_list>
+#include <map>
 #include <type_traits>
 #include <vector>
 
@@ -42,38 +44,36 @@ namespace CGAL {
 namespace Pmsum {
 namespace internal {
 
-/// The point (1 - lambda) (p0 + q0) + lambda (p + q) of a lattice segment from p0 + q0 to
-/// p + q (same vertex triples on each side); origin_p, origin_q: the features holding its
-/// two parts.
+/// The point x0 + lambda (x1 - x0) + mu (x2 - x0) of a lattice cell with corners
+/// x0 = p0 + q0, x1 = p + q and x2 = p2 + q2 (same vertex triples on each side): on the
+/// lattice segment from x0 to x1 when mu = 0 (a trim point), else inside the cell (an island
+/// point). origin_p, origin_q: the features holding its two parts.
 struct Trim
 {
   Sample p, q;
   CGAL::Exact_rational lambda;
+  Sample p2, q2; // with mu = 0: unused
+  CGAL::Exact_rational mu;
   Feature origin_p, origin_q;
+
+  /// The samples of corners x1 and x2 on side `side` (0: P, 1: Q).
+  const Sample& towards(int side) const { return side == 0 ? p : q; }
+  const Sample& towards2(int side) const { return side == 0 ? p2 : q2; }
 };
 
-/// Exact barycentric weights over a0's vertices of (1 - lambda) a0 + lambda a (same vertices).
-inline std::array<CGAL::Exact_rational, 3> trim_weights(const Sample& a0, const Sample& a, const CGAL::Exact_rational& lambda)
+/// Exact barycentric weights over a0's vertices of side `side`'s part of the point of `t`
+/// (a0: that side's sample of corner x0).
+inline std::array<CGAL::Exact_rational, 3> trim_weights(const Sample& a0, const Trim& t, int side)
 {
-  std::array<CGAL::Exact_rational, 3> w;
-  const CGAL::Exact_rational mu = 1 - lambda;
-  for (int i = 0; i < 3; ++i)
-    w[i] = mu * CGAL::Exact_rational(a0.weights[i]) / CGAL::Exact_rational(a0.denominator) +
-           lambda * CGAL::Exact_rational(a.weights[i]) / CGAL::Exact_rational(a.denominator);
-  return w;
-}
-
-/// Converts an Mpzf exactly to CGAL::Exact_rational (GMP's mpq_class, or CGAL::Gmpq).
-template <class Q = CGAL::Exact_rational>
-Q to_rational(const Exact_nt& x)
-{
-  if constexpr (std::is_constructible<Q, CGAL::Gmpq>::value) {
-    return Q(CGAL::Gmpq(x));
-  } else {
-    Q r;
-    x.export_to_mpq_t(r.get_mpq_t());
-    return r;
+  using Q = CGAL::Exact_rational;
+  auto weight = [](const Sample& s, int i) -> Q { return Q(s.weights[i]) / Q(s.denominator); }; // not an expression template of temporaries
+  const bool in_cell = CGAL::sign(t.mu) != CGAL::ZERO;
+  std::array<Q, 3> w;
+  for (int i = 0; i < 3; ++i) {
+    w[i] = (1 - t.lambda - t.mu) * weight(a0, i) + t.lambda * weight(t.towards(side), i);
+    if (in_cell) w[i] += t.mu * weight(t.towards2(side), i);
   }
+  return w;
 }
 
 /// Converts a rational to FT: exactly if FT is constructible from it, else rounded.
@@ -92,7 +92,10 @@ FT sum_coordinate(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const
   const FT at_lattice = sample_coordinate<FT>(P, p, c) + sample_coordinate<FT>(Q, q, c);
   if (!trim) return at_lattice;
   const FT lambda = rational_to<FT>(trim->lambda);
-  return at_lattice + lambda * (sample_coordinate<FT>(P, trim->p, c) + sample_coordinate<FT>(Q, trim->q, c) - at_lattice);
+  FT x = at_lattice + lambda * (sample_coordinate<FT>(P, trim->p, c) + sample_coordinate<FT>(Q, trim->q, c) - at_lattice);
+  if (CGAL::sign(trim->mu) == CGAL::ZERO) return x;
+  const FT mu = rational_to<FT>(trim->mu);
+  return x + mu * (sample_coordinate<FT>(P, trim->p2, c) + sample_coordinate<FT>(Q, trim->q2, c) - at_lattice);
 }
 
 /// A trim point found by a pair's search, with the radius within which an output point
@@ -275,23 +278,32 @@ struct Corner_info
 
 /// The trim points of a facet lattice (see the file comment): the free-part ends of the
 /// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
-/// point i, computing it if needed), appended to `out` in a canonical order. A segment is
-/// skipped without a search when both ends lie in one certified octree leaf (convex, inside
-/// the sum), or when `certified_box(lo, hi)` tells that its bounding box is inside the sum.
-template <class CornerInfo, class CertifiedBox>
+/// point i, computing it if needed), then, with `islands`, the island points of those cells
+/// whose edges had none (island_search.h), appended to `out` in a canonical order. A segment or a cell is
+/// skipped without a search when `certified(lo, hi, ball)` tells that its bounding box is
+/// inside the sum (by octree leaves; `ball`: also by the certificate's balls, costlier, for
+/// cells), or a segment's ends lie in one certified octree leaf.
+template <class CornerInfo, class Certified>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, const CornerInfo& corner,
-                      const CertifiedBox& certified_box, Segment_search& search, std::vector<Trim_point>& out)
+                      const Certified& certified_box, Segment_search& search, Island_search* islands,
+                      std::vector<Trim_point>& out)
 {
-  std::set<std::pair<std::uint32_t, std::uint32_t>> segments; // canonical order, each once
-  for (const auto& cell : lattice.cells()) {
+  using Segment = std::pair<std::uint32_t, std::uint32_t>;
+  auto segment = [](const std::array<std::uint32_t, 3>& cell, int k) {
+    return Segment((std::min)(cell[k], cell[(k + 1) % 3]), (std::max)(cell[k], cell[(k + 1) % 3]));
+  };
+  std::vector<std::size_t> cells; // with a corner inside
+  std::map<Segment, bool> segments; // canonical order, each once: has it free parts?
+  for (std::size_t i = 0; i < lattice.cells().size(); ++i) {
+    const auto& cell = lattice.cells()[i];
     bool inside = false;
     for (std::uint32_t c : cell) inside = inside || corner(c).status == Corner::inside;
     if (!inside) continue;
-    for (int k = 0; k < 3; ++k)
-      segments.emplace((std::min)(cell[k], cell[(k + 1) % 3]), (std::max)(cell[k], cell[(k + 1) % 3]));
+    cells.push_back(i);
+    for (int k = 0; k < 3; ++k) segments.emplace(segment(cell, k), false);
   }
-  if (segments.empty()) return;
+  if (cells.empty()) return;
   std::vector<std::optional<Exact_point>> exact(lattice.size()); // lattice points, once each
   auto point = [&](std::uint32_t k) -> const Exact_point& {
     if (!exact[k]) exact[k] = exact_sum(P, lattice.p(k), Q, lattice.q(k));
@@ -305,32 +317,53 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     }
     return *rounded[k];
   };
+  auto certified = [&](std::initializer_list<std::uint32_t> corners, bool ball) {
+    Point3 lo = position(*corners.begin()), hi = lo;
+    for (std::uint32_t k : corners)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = (std::min)(lo[c], position(k)[c]);
+        hi[c] = (std::max)(hi[c], position(k)[c]);
+      }
+    return certified_box(lo, hi, ball);
+  };
   const Direction* directions = pairs.directions.data() + fp.first_direction;
   const double radius = (std::max)(0., d - lattice.diameter());
+  // The point of corner a plus trim (exact weights), with its origins and position.
+  auto add = [&](std::uint32_t a, Trim trim) {
+    Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, radius, fp.first_direction};
+    t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim, 0), P);
+    t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim, 1), Q);
+    for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
+    out.push_back(std::move(t));
+  };
   std::vector<Segment_parameter> ends;
-  for (const auto& [a, b] : segments) {
+  for (auto& [ab, has_ends] : segments) {
+    const auto [a, b] = ab;
     const Corner_info &ca = corner(a), &cb = corner(b);
     if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
-    if (ca.status == Corner::inside && cb.status == Corner::inside) {
-      Point3 lo, hi;
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = (std::min)(position(a)[c], position(b)[c]);
-        hi[c] = (std::max)(position(a)[c], position(b)[c]);
-      }
-      if (certified_box(lo, hi)) continue;
-    }
+    if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, false)) continue;
     const Translation_segment s(point(a), point(b));
     ends.clear();
     search.free_ends(s, directions, fp.number_of_directions, ends, {ca.witness, cb.witness});
+    has_ends = !ends.empty();
     for (std::size_t k = 0; k < ends.size(); ++k) {
       if (k > 0 && compare(ends[k], ends[k - 1]) == CGAL::ZERO) continue; // an isolated free point
-      Trim_point t{lattice.p(a), lattice.q(a), Trim{lattice.p(b), lattice.q(b), {}, {}, {}}, {}, radius, fp.first_direction};
-      t.trim.lambda = to_rational(ends[k].num) / to_rational(ends[k].den);
-      t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim.p, t.trim.lambda), P);
-      t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim.q, t.trim.lambda), Q);
-      for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
-      out.push_back(std::move(t));
+      add(a, Trim{lattice.p(b), lattice.q(b), ends[k].value(), {}, {}, {}, {}, {}});
     }
+  }
+  if (!islands) return;
+  std::vector<Cell_weights> island;
+  for (std::size_t i : cells) {
+    const auto& cell = lattice.cells()[i];
+    bool has_ends = false;
+    for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)];
+    if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
+    island.clear();
+    islands->island_points({point(cell[0]), point(cell[1]), point(cell[2])},
+                          {corner(cell[0]).witness, corner(cell[1]).witness, corner(cell[2]).witness}, directions,
+                          fp.number_of_directions, island);
+    for (const Cell_weights& w : island)
+      add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), w[1], lattice.p(cell[2]), lattice.q(cell[2]), w[2], {}, {}});
   }
 }
 
