@@ -91,6 +91,13 @@ private:
     Segment_parameter l;
   };
 
+  /// The part [from, to] of the line from a to b.
+  struct Line_piece
+  {
+    Border_point a, b;
+    Segment_parameter from, to;
+  };
+
   bool crosses_at_corners(const Pair& pair, const std::array<Exact_point, 3>& T)
   {
     for (const Exact_point& x : T) {
@@ -140,14 +147,16 @@ private:
         ends.push_back({k, l});
       }
     }
-    if (ends.size() != 2 || is_searched(ends[0], ends[1])) return;
-    m_lines.push_back({ends[0], ends[1]});
+    if (ends.size() != 2) return;
     // Only where the pair's crossing set, or its closure, can be: [low, high] (intervals).
+    // Other pairs can share the line with other ranges: each clipped piece is searched once.
     const Exact_point p0 = point(T, ends[0]), p1 = point(T, ends[1]);
     const Crossing_range range = m_filter.crossing_range(pair.first, pair.second, enclosure(p0), enclosure(p1));
     if (range.misses_segment()) return;
     const Segment_parameter from = range.low > 0 ? Segment_parameter{Exact_nt(range.low), Exact_nt(1)} : Segment_parameter::zero();
     const Segment_parameter to = range.high < 1 ? Segment_parameter{Exact_nt(range.high), Exact_nt(1)} : Segment_parameter::one();
+    if (is_searched({ends[0], ends[1], from, to})) return;
+    m_lines.push_back({ends[0], ends[1], from, to});
     const Translation_segment line(Translation_segment(p0, p1).at(from), Translation_segment(p0, p1).at(to));
     if (hidden(line)) return;
     const Cell_weights w0 = along(weights(ends[0]), weights(ends[1]), from), w1 = along(weights(ends[0]), weights(ends[1]), to);
@@ -186,11 +195,14 @@ private:
     return false;
   }
 
-  bool is_searched(const Border_point& p, const Border_point& q) const
+  /// Was this piece (the same line, clipped to the same parameters) searched in this cell?
+  bool is_searched(const Line_piece& piece) const
   {
     auto same = [](const Border_point& x, const Border_point& y) { return x.edge == y.edge && compare(x.l, y.l) == CGAL::ZERO; };
-    for (const auto& [x, y] : m_lines)
-      if ((same(x, p) && same(y, q)) || (same(x, q) && same(y, p))) return true;
+    for (const Line_piece& p : m_lines)
+      if (same(p.a, piece.a) && same(p.b, piece.b) && compare(p.from, piece.from) == CGAL::ZERO &&
+          compare(p.to, piece.to) == CGAL::ZERO)
+        return true;
     return false;
   }
 
@@ -221,7 +233,7 @@ private:
   std::size_t m_cells = 0;
   std::vector<Pair> m_pairs; // of the current cell, that may cross in it
   std::size_t m_last_cover = 0;
-  std::vector<std::pair<Border_point, Border_point>> m_lines; // searched in the current cell
+  std::vector<Line_piece> m_lines; // searched in the current cell
   std::vector<Segment_parameter> m_ends;
 };
 
