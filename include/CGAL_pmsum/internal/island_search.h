@@ -78,9 +78,10 @@ public:
     ++m_cells;
     m_lines.clear();
     const std::size_t first = out.size();
-    for (const auto& [u, v] : pairs)
-      m_filter.for_each_predicate(u, v, [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
-                                            const Moving_point& d) { search_line(T, e, {u, v}, a, b, c, d, out, first); });
+    for (const Pair& pair : pairs) // (a lambda cannot capture structured bindings in C++17)
+      m_filter.for_each_predicate(pair.first, pair.second,
+                                  [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                                      const Moving_point& d) { search_line(T, e, pair, a, b, c, d, out, first); });
   }
 
 private:
