@@ -31,6 +31,10 @@
 #include <CGAL_pmsum/internal/normal_filter.h>
 #include <CGAL_pmsum/internal/perturbed_predicates.h>
 
+#include <boost/container/static_vector.hpp>
+
+#include <initializer_list>
+#include <tuple>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -110,6 +114,58 @@ struct Crossing_range
   double low = -HUGE_VAL, in_from = HUGE_VAL, in_to = -HUGE_VAL, high = HUGE_VAL;
   bool misses_segment() const { return low > 1 || high < 0 || low > high; }
   bool covers_segment() const { return in_from < 0 && in_to > 1; }
+};
+
+/// The slabs lo < w.t < hi (enclosures) whose intersection is the set of translations t at
+/// which two triangles cross (B - A, open): where(T) tells, from intervals, where a triangle
+/// T of translations lies with respect to that set.
+struct Crossing_slabs
+{
+  enum class Where { inside, outside, border };
+  struct Slab
+  {
+    Vec3<Interval> w;
+    Interval lo, hi;
+
+    /// Where T lies with respect to this slab. Needs rounding towards +infinity.
+    Where where(const std::array<Vec3<Interval>, 3>& T) const
+    {
+      const auto [tl, th] = extent(w, T);
+      if (th < lo.inf() || tl > hi.sup()) return Where::outside;
+      return tl > lo.sup() && th < hi.inf() ? Where::inside : Where::border;
+    }
+  };
+
+  /// Bounds of the extent of the triangle T (boxes holding its corners) along w. Needs
+  /// rounding towards +infinity.
+  static std::pair<double, double> extent(const Vec3<Interval>& w, const std::array<Vec3<Interval>, 3>& T)
+  {
+    double tl = HUGE_VAL, th = -HUGE_VAL;
+    for (const auto& x : T) {
+      const Interval wx = dot(w, x);
+      tl = (std::min)(tl, wx.inf());
+      th = (std::max)(th, wx.sup());
+    }
+    return {tl, th};
+  }
+
+  boost::container::static_vector<Slab, 12> slabs;
+  bool known = false; // false: nothing is known (bare edges)
+
+  /// inside: the pair crosses on all of T (any perturbation); outside: nowhere in T; else
+  /// the border of its crossing set may cross T. T: boxes holding the triangle's corners.
+  /// Needs rounding towards +infinity.
+  Where where(const std::array<Vec3<Interval>, 3>& T) const
+  {
+    if (!known) return Where::border;
+    bool inside = true;
+    for (const Slab& s : slabs) {
+      const Where w = s.where(T);
+      if (w == Where::outside) return w;
+      inside = inside && w == Where::inside;
+    }
+    return inside ? Where::inside : Where::border;
+  }
 };
 
 /// Counters of the CD filter, for the summary.
@@ -210,6 +266,18 @@ public:
   /// Does item u of the moving mesh cross item v of the static mesh for the query set by
   /// set_point()? `here_perturbed()` then tells whether the test looked at the perturbation.
   bool pair_crosses_here(Index u, Index v) { return items_cross(u, v); }
+  /// Does item pair (u, v) cross at every point of `points`, each perturbed as by
+  /// set_point(x, directions, count, prefix)? (Where the pair crosses is convex: then it
+  /// crosses on their convex hull, perturbed alike.)
+  bool pair_crosses_at(Index u, Index v, std::initializer_list<const Exact_point*> points, const Direction* directions,
+                       std::uint32_t count, const Prefix& prefix = {})
+  {
+    for (const Exact_point* x : points) {
+      set_point(*x, directions, count, prefix);
+      if (!items_cross(u, v)) return false;
+    }
+    return true;
+  }
   bool here_perturbed() const { return m_perturbed; }
   /// The last crossing pair found (moving item, static item), if any.
   const std::optional<std::pair<Index, Index>>& last_crossing() const { return m_hit; }
@@ -283,27 +351,29 @@ public:
     return r;
   }
 
-  /// Can the pair (u, v) cross at a translation in the triangle T (boxes holding its
-  /// corners)? False only if intervals show that T misses a slab of B - A, or B - A misses
-  /// the plane of T.
-  bool may_cross_in(Index u, Index v, const std::array<Vec3<Interval>, 3>& T) const
+  /// The slabs of the crossing set B - A of the pair (u, v), and where the triangle T of
+  /// translations (boxes holding its corners) lies (Crossing_slabs::where()); when T is
+  /// outside, no slab is kept (they stay unknown).
+  /// Bare edges: nothing is known. Needs rounding towards +infinity.
+  std::pair<Crossing_slabs, Crossing_slabs::Where> crossing_slabs(Index u, Index v, const std::array<Vec3<Interval>, 3>& T) const
   {
-    if (m_moving.is_edge(u) || m_static.is_edge(v)) return true;
-    CGAL::Protect_FPU_rounding<true> guard;
-    bool meets = true;
-    auto test = [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
-      double tl = HUGE_VAL, th = -HUGE_VAL; // T's extent along w
-      for (const auto& x : T) {
-        const Interval wx = dot(w, x);
-        tl = (std::min)(tl, wx.inf());
-        th = (std::max)(th, wx.sup());
-      }
-      return meets = !(th < lo.inf() || tl > hi.sup());
+    using Where = Crossing_slabs::Where;
+    std::pair<Crossing_slabs, Where> r{{}, Where::border};
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    r.first.known = true;
+    bool inside = true;
+    auto add = [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
+      const Crossing_slabs::Slab s{w, lo, hi};
+      const Where where = s.where(T);
+      if (where == Where::outside) { r = {{}, where}; return false; } // the slabs stay unknown
+      inside = inside && where == Where::inside;
+      r.first.slabs.push_back(s);
+      return true;
     };
-    for_each_slab(u, v, test);
-    if (!meets) return false;
-    const Vec3<Interval> n = cross(T[1] - T[0], T[2] - T[0]);
-    return slab(u, v, n, test);
+    bool all = true;
+    for_each_slab(u, v, [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) { return all = add(w, lo, hi); });
+    if (all && inside) r.second = Where::inside;
+    return r;
   }
 
   /// Calls f(w, lo, hi) for the eleven axes w normal to the facets of B - A (A: moving
@@ -331,22 +401,57 @@ public:
   {
     if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
       return true;
-    auto extreme = [&](const Tree_mesh& m, const std::array<Index, 3>& t, bool maximum) {
-      Interval r = dot(w, to_nt<Interval>(m.base[t[0]]));
-      for (int k = 1; k < 3; ++k) {
-        const Interval x = dot(w, to_nt<Interval>(m.base[t[k]]));
-        r = maximum ? Interval((std::max)(r.inf(), x.inf()), (std::max)(r.sup(), x.sup()))
-                    : Interval((std::min)(r.inf(), x.inf()), (std::min)(r.sup(), x.sup()));
+    const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
+    return f(w, b.first - a.second, b.second - a.first);
+  }
+
+  /// Starts a plane of translations, that of the triangle T (boxes holding its corners):
+  /// may_meet_plane() then tests pairs against it, each triangle's extent along the plane's
+  /// normal computed once per plane.
+  void set_plane(const std::array<Vec3<Interval>, 3>& T)
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    Plane& p = m_plane;
+    p.normal = cross(T[1] - T[0], T[2] - T[0]);
+    std::tie(p.low, p.high) = Crossing_slabs::extent(p.normal, T);
+    ++p.stamp;
+    p.moving.resize(m_moving.mesh->number_of_triangles());
+    p.fixed.resize(m_static.mesh->number_of_triangles());
+  }
+
+  /// Can the crossing set B - A of the pair (u, v) meet the plane set by set_plane()?
+  /// (Intervals: its extent along the plane's normal.) Needs rounding towards +infinity.
+  bool may_meet_plane(Index u, Index v)
+  {
+    CGAL_precondition(m_plane.stamp != 0);
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return true;
+    auto extent = [&](const Tree_mesh& m, Index t, std::vector<Plane::Extent>& memo) -> const Plane::Extent& {
+      Plane::Extent& e = memo[t];
+      if (e.stamp != m_plane.stamp) {
+        e.stamp = m_plane.stamp;
+        e.range = extremes(m, t, m_plane.normal);
       }
-      return r;
+      return e;
     };
-    const auto& tm = m_moving.mesh->triangles[u];
-    const auto& ts = m_static.mesh->triangles[v];
-    return f(w, extreme(m_static, ts, false) - extreme(m_moving, tm, true),
-             extreme(m_static, ts, true) - extreme(m_moving, tm, false));
+    const auto &a = extent(m_moving, u, m_plane.moving).range, &b = extent(m_static, v, m_plane.fixed).range;
+    return !(m_plane.high < (b.first - a.second).inf() || m_plane.low > (b.second - a.first).sup());
   }
 
 private:
+  /// Enclosures of the minimum and the maximum of w.x over the corners x of triangle t of m.
+  /// Needs rounding towards +infinity.
+  static std::pair<Interval, Interval> extremes(const Tree_mesh& m, Index t, const Vec3<Interval>& w)
+  {
+    const auto& tri = m.mesh->triangles[t];
+    Interval lo = dot(w, to_nt<Interval>(m.base[tri[0]])), hi = lo;
+    for (int k = 1; k < 3; ++k) {
+      const Interval x = dot(w, to_nt<Interval>(m.base[tri[k]]));
+      lo = Interval((std::min)(lo.inf(), x.inf()), (std::min)(lo.sup(), x.sup()));
+      hi = Interval((std::max)(hi.inf(), x.inf()), (std::max)(hi.sup(), x.sup()));
+    }
+    return {lo, hi};
+  }
+
   bool configuration_is_free()
   {
     ++m_stats.queries;
@@ -650,6 +755,18 @@ private:
   const Direction* m_dirs = nullptr;
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
   Prefix m_prefix{}; // set_point(): the first perturbation directions
+  struct Plane // set_plane()
+  {
+    struct Extent
+    {
+      std::uint64_t stamp = 0;
+      std::pair<Interval, Interval> range; // of a triangle along the normal
+    };
+    Vec3<Interval> normal;
+    double low = 0, high = 0; // of the plane along its normal
+    std::uint64_t stamp = 0;
+    std::vector<Extent> moving, fixed;
+  } m_plane;
   std::array<Vec3<Interval>, 2> m_prefix_interval;
   Vec3<Interval> m_x;
   std::optional<std::pair<Vec3<Exact_nt>, Exact_nt>> m_exact_x;

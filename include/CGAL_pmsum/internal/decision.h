@@ -224,8 +224,7 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
   auto corner = [&](std::uint32_t k) -> const Corner_info& {
     Corner_info& info = corners[k];
     if (lattice.is_candidate(k) || info.status != Corner::unknown) return info;
-    Point3 x;
-    for (int i = 0; i < 3; ++i) x[i] = sum_coordinate<double>(P, Q, lattice.p(k), lattice.q(k), nullptr, i);
+    const Point3 x = lattice.position(k, P, Q);
     if (c.net && c.net->covers(x)) { info.status = Corner::covered; return info; }
     if (c.octree && (info.leaf = c.octree->certified_leaf(x))) { info.status = Corner::inside; return info; }
     ++counters.corner_tests;
@@ -248,7 +247,7 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
   };
   find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, certified, search, c.islands ? &islands : nullptr, out.trims);
   counters.island_cells += islands.searched_cells();
-  counters.trim_segments += search.statistics().segments;
+  counters.trim_segments += search.searched_segments();
   counters.trim_points += out.trims.size() - before;
   counters.trim_queries += filter.statistics().queries - queries_before;
 }

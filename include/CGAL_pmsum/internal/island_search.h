@@ -14,14 +14,27 @@
 // island lies on one side of each of its edges. Searching, for every such line that meets T,
 // the free parts of its piece in T (segment_search.h) with every point perturbed first
 // towards one side, then the other, finds the island's edges: their ends are exact boundary
-// points of the sum, inside T (closer than diam(T) to every point of the island).
+// points of the sum, inside T. One such point is enough: it is closer than diam(T) to every
+// point of every island of T, so the search of a cell stops at the first.
 //
 // Only cells that need it are searched: one with a corner inside the sum and no end of a
 // free interval on its edges (else those ends are in T and closer than diam(T) to its
 // islands), that is not certified inside the sum, and that no single item pair covers (one
 // pair crossing at the three corners crosses on all of T: the translations where two
 // triangles cross form a convex set; shown by exact tests of the corners' witnesses, or by
-// intervals, Cd_filter::crossing_range()).
+// intervals, Cd_filter::crossing_slabs(), the pairs that covered the last cells first).
+//
+// Most such cells are covered by several pairs together and have no island. So T is first
+// halved (max_depth times, into 4 triangles each time), and a sub-cell S is dropped when one
+// pair certainly crosses on all of S, or when no pair's crossing set has its border in S
+// (intervals: the set certainly misses S or certainly holds it). Dropping loses nothing: a
+// point y on the edge of an island is a limit of free points and of hidden ones; near y
+// some pair's answer must change (if every pair's answer were constant near y, one crossing
+// would hide all of it, and without crossings the containment answer would be constant), so
+// the border of that pair's crossing set passes through y, and no pair holds y inside. The
+// lines searched are then those of the pairs whose borders may cross the sub-cells left,
+// clipped to those sub-cells: far fewer than T's, and most cells need none. (Bare edges
+// have no slabs: a sub-cell left with only those is searched without halving it further.)
 
 #ifndef CGAL_PMSUM_INTERNAL_ISLAND_SEARCH_H
 #define CGAL_PMSUM_INTERNAL_ISLAND_SEARCH_H
@@ -30,6 +43,7 @@
 
 #include <CGAL/Exact_rational.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
@@ -48,44 +62,129 @@ class Island_search
 public:
   using Pair = std::pair<Index, Index>;
 
+  /// Number of halvings of a cell before the lines of its remaining sub-cells are searched.
+  static constexpr int max_depth = 4;
+
   Island_search(Cd_filter& filter, Segment_search& search) : m_filter(filter), m_search(search) {}
 
-  /// Number of cells whose lines were searched.
+  /// Number of cells whose lines were searched (in some sub-cell).
   std::size_t searched_cells() const { return m_cells; }
 
-  /// Appends to `out` the ends of the free parts of the lines in cell T (corners exact, not
-  /// collinear) that can bound an island, unless one of the `witnesses` (pairs crossing at
-  /// some corner) crosses at all three. Points are perturbed along the directions.
-  void island_points(const std::array<Exact_point, 3>& T, const std::array<std::optional<Pair>, 3>& witnesses,
-                     const Direction* directions, std::uint32_t count, std::vector<Cell_weights>& out)
+  /// A point (weights over T's corners) of an island of cell T (corners exact, not
+  /// collinear), exactly on the boundary of the sum, if T has islands: the first end of a
+  /// free part found on the lines that can bound one. It is closer than diam(T) to every
+  /// point of every island of T, which is all that coverage needs. None if one of the
+  /// `witnesses` (pairs crossing at some corner) crosses at all three. Points are perturbed
+  /// along the directions.
+  std::optional<Cell_weights> island_point(const std::array<Exact_point, 3>& T,
+                                           const std::array<std::optional<Pair>, 3>& witnesses,
+                                           const Direction* directions, std::uint32_t count)
   {
     m_directions = directions;
     m_count = count;
     for (const auto& w : witnesses)
-      if (w && crosses_at_corners(*w, T)) return;
-    std::array<Vec3<Interval>, 3> e;
-    for (int k = 0; k < 3; ++k) e[k] = enclosure(T[k]);
-    std::vector<Pair>& pairs = m_pairs;
-    pairs.clear();
-    bool covered = false; // by one pair, shown by intervals: it certainly crosses at the corners
-    m_filter.for_each_overlapping_pair(hull(hull(e[0], e[1]), e[2]), [&](Index u, Index v) {
-      if (!m_filter.may_cross_in(u, v, e)) return false; // then its lines bound nothing in T
-      pairs.emplace_back(u, v);
-      return covered = m_filter.crossing_range(u, v, e[0], e[1]).covers_segment() &&
-                       m_filter.crossing_range(u, v, e[0], e[2]).covers_segment();
+      if (w && m_filter.pair_crosses_at(w->first, w->second, {&T[0], &T[1], &T[2]}, directions, count)) return {};
+    Sub_cell whole{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, 0, {}};
+    for (int k = 0; k < 3; ++k) whole.e[k] = m_e[k] = enclosure(T[k]);
+    m_pairs.clear();
+    std::vector<std::uint32_t> border; // of m_pairs: those whose crossing sets' borders may cross T
+    m_filter.set_plane(whole.e);
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      // Neighbouring cells are often covered by the same pair: the last ones that did first.
+      for (const auto& pair : m_recent_covers)
+        if (pair && m_filter.crossing_slabs(pair->first, pair->second, whole.e).second == Where::inside) return {};
+    }
+    bool covered = false;
+    m_filter.for_each_overlapping_pair(hull(hull(whole.e[0], whole.e[1]), whole.e[2]), [&](Index u, Index v) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      if (!m_filter.may_meet_plane(u, v)) return false;
+      auto [slabs, w] = m_filter.crossing_slabs(u, v, whole.e);
+      if (w == Where::border) {
+        border.push_back(std::uint32_t(m_pairs.size()));
+        m_pairs.push_back({{u, v}, std::move(slabs)});
+      }
+      if (w != Where::inside) return false;
+      m_recent_covers[m_next_recent++ % m_recent_covers.size()] = Pair(u, v);
+      return covered = true;
     });
-    if (covered) return;
-    ++m_cells;
-    m_lines.clear();
-    const std::size_t first = out.size();
-    for (const Pair& pair : pairs) // (a lambda cannot capture structured bindings in C++17)
-      m_filter.for_each_predicate(pair.first, pair.second,
-                                  [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
-                                      const Moving_point& d) { search_line(T, e, pair, a, b, c, d, out, first); });
+    if (covered || border.empty()) return {};
+    m_T = T; // over a common denominator: the sub-cells' corners are integer combinations
+    if (!(T[0].W == T[1].W && T[1].W == T[2].W))
+      for (int k = 0; k < 3; ++k) {
+        for (int j = 0; j < 3; ++j)
+          if (j != k)
+            for (int c = 0; c < 3; ++c) m_T[k].X[c] *= T[j].W;
+        m_T[k].W = T[0].W * T[1].W * T[2].W;
+      }
+    m_searched = false;
+    m_found.reset();
+    search(whole, border);
+    m_cells += m_searched;
+    return m_found;
   }
 
 private:
-  /// A point on the border of T: parameter l of edge k (from corner k to corner k + 1).
+  /// A triangle inside T: its corners' integer weights over T's corners, divided by 2^depth,
+  /// and their enclosures.
+  struct Sub_cell
+  {
+    std::array<std::array<std::int64_t, 3>, 3> corner;
+    int depth;
+    std::array<Vec3<Interval>, 3> e;
+  };
+
+  using Where = Crossing_slabs::Where;
+
+  /// A pair that may cross in the current cell, with its crossing set's slabs.
+  struct Cell_pair
+  {
+    Pair pair;
+    Crossing_slabs slabs;
+  };
+
+  /// The island points of sub-cell S, whose `pairs` may have their crossing sets' borders
+  /// in S: halved while S is shallower than max_depth, dropping the sub-cells that one pair
+  /// covers or that no border meets (no island's edge lies there: see the file comment).
+  void search(const Sub_cell& S, const std::vector<std::uint32_t>& pairs)
+  {
+    // Halving helps only the pairs whose crossing sets' slabs are known (not bare edges).
+    const bool known = std::any_of(pairs.begin(), pairs.end(), [&](std::uint32_t i) { return m_pairs[i].slabs.known; });
+    if (S.depth == max_depth || !known) { search_lines(S, pairs); return; }
+    const auto& c = S.corner;
+    auto mid = [&](int i, int j) {
+      return std::array<std::int64_t, 3>{c[i][0] + c[j][0], c[i][1] + c[j][1], c[i][2] + c[j][2]};
+    };
+    auto twice = [&](int i) { return std::array<std::int64_t, 3>{2 * c[i][0], 2 * c[i][1], 2 * c[i][2]}; };
+    const auto m01 = mid(0, 1), m12 = mid(1, 2), m20 = mid(2, 0);
+    const std::array<std::array<std::array<std::int64_t, 3>, 3>, 4> children = {
+      {{twice(0), m01, m20}, {m01, twice(1), m12}, {m20, m12, twice(2)}, {m01, m12, m20}}};
+    std::vector<std::uint32_t> kept;
+    for (const auto& child : children) {
+      Sub_cell C{child, S.depth + 1, {}};
+      kept.clear();
+      bool covered = false;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const Interval scale = Interval(1) / Interval(double(std::int64_t(1) << C.depth));
+        for (int k = 0; k < 3; ++k)
+          for (int x = 0; x < 3; ++x) {
+            Interval v(0);
+            for (int j = 0; j < 3; ++j) v += Interval(double(child[k][j])) * m_e[j][x];
+            C.e[k][x] = v * scale;
+          }
+        for (std::uint32_t i : pairs) {
+          const Where w = m_pairs[i].slabs.where(C.e);
+          if (w == Where::inside) { covered = true; break; }
+          if (w == Where::border) kept.push_back(i);
+        }
+      }
+      if (!covered && !kept.empty()) search(C, kept);
+      if (m_found) return;
+    }
+  }
+
+  /// A point on the border of a sub-cell: parameter l of edge k (from corner k to k + 1).
   struct Border_point
   {
     int edge;
@@ -99,22 +198,30 @@ private:
     Segment_parameter from, to;
   };
 
-  bool crosses_at_corners(const Pair& pair, const std::array<Exact_point, 3>& T)
+  /// Searches the lines of the predicates of `pairs` in the sub-cell S (search_line()).
+  void search_lines(const Sub_cell& S, const std::vector<std::uint32_t>& pairs)
   {
-    for (const Exact_point& x : T) {
-      m_filter.set_point(x, m_directions, m_count);
-      if (!m_filter.pair_crosses_here(pair.first, pair.second)) return false;
+    m_searched = true;
+    std::array<Exact_point, 3> corners;
+    for (int k = 0; k < 3; ++k) corners[k] = exact_point(S.corner[k], S.depth);
+    m_lines.clear();
+    for (std::uint32_t i : pairs) {
+      const Pair& pair = m_pairs[i].pair;
+      m_filter.for_each_predicate(pair.first, pair.second,
+                                  [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                                      const Moving_point& d) { if (!m_found) search_line(S, corners, pair, pairs, a, b, c, d); });
+      if (m_found) return;
     }
-    return true;
   }
 
-  /// The zero line of the predicate (a, b, c, d) of `pair` in the plane of T, if it crosses T:
-  /// the part of its piece in T where the pair may cross (or bound a crossing) is searched
-  /// from both sides (only from a side holding a corner of T).
-  void search_line(const std::array<Exact_point, 3>& T, const std::array<Vec3<Interval>, 3>& e, const Pair& pair,
-                   const Moving_point& a,
-                   const Moving_point& b, const Moving_point& c, const Moving_point& d, std::vector<Cell_weights>& out,
-                   std::size_t first)
+  /// The zero line of the predicate (a, b, c, d) of `pair` in the plane of the sub-cell S
+  /// (corners: its corners, exact), if it crosses S: the part of its piece in S where the
+  /// pair may cross (or bound a crossing) is searched from both sides (only from a side
+  /// holding a corner of S), unless one of `pairs` certainly crosses on all of it. Sets
+  /// m_found to the first end of a free part.
+  void search_line(const Sub_cell& S, const std::array<Exact_point, 3>& corners, const Pair& pair,
+                   const std::vector<std::uint32_t>& pairs, const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                   const Moving_point& d)
   {
     {
       CGAL::Protect_FPU_rounding<true> guard;
@@ -122,18 +229,18 @@ private:
       const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
       bool positive = true, negative = true;
       for (int k = 0; k < 3; ++k) {
-        const Interval v = d0 + dot(g, e[k]);
+        const Interval v = d0 + dot(g, S.e[k]);
         positive = positive && v.inf() > 0;
         negative = negative && v.sup() < 0;
       }
-      if (positive || negative) return; // the line misses T
+      if (positive || negative) return; // the line misses S
     }
     const Exact_nt d0 = value_at_origin<Exact_nt>(a, b, c, d);
     const Vec3<Exact_nt> g = gradient<Exact_nt>(a, b, c, d);
-    std::array<Exact_nt, 3> D; // W_k times the predicate at corner k
+    std::array<Exact_nt, 3> D; // W times the predicate at corner k (a common W)
     std::array<CGAL::Sign, 3> s;
     for (int k = 0; k < 3; ++k) {
-      D[k] = T[k].W * d0 + dot(g, T[k].X);
+      D[k] = corners[k].W * d0 + dot(g, corners[k].X);
       s[k] = CGAL::sign(D[k]);
     }
     if (s[0] == CGAL::ZERO && s[1] == CGAL::ZERO && s[2] == CGAL::ZERO) return; // constant on the plane
@@ -142,8 +249,7 @@ private:
       const int j = (k + 1) % 3;
       if (s[k] == CGAL::ZERO) ends.push_back({k, Segment_parameter::zero()});
       else if (s[j] != CGAL::ZERO && s[j] != s[k]) {
-        // D / W is affine along the edge: l = (D_k / W_k) / (D_k / W_k - D_j / W_j).
-        Segment_parameter l{D[k] * T[j].W, D[k] * T[j].W - D[j] * T[k].W};
+        Segment_parameter l{D[k], D[k] - D[j]}; // D is affine along the edge
         if (CGAL::sign(l.den) == CGAL::NEGATIVE) { l.num = -l.num; l.den = -l.den; }
         ends.push_back({k, l});
       }
@@ -151,7 +257,7 @@ private:
     if (ends.size() != 2) return;
     // Only where the pair's crossing set, or its closure, can be: [low, high] (intervals).
     // Other pairs can share the line with other ranges: each clipped piece is searched once.
-    const Exact_point p0 = point(T, ends[0]), p1 = point(T, ends[1]);
+    const Exact_point p0 = point(corners, ends[0]), p1 = point(corners, ends[1]);
     const Crossing_range range = m_filter.crossing_range(pair.first, pair.second, enclosure(p0), enclosure(p1));
     if (range.misses_segment()) return;
     const Segment_parameter from = range.low > 0 ? Segment_parameter{Exact_nt(range.low), Exact_nt(1)} : Segment_parameter::zero();
@@ -159,44 +265,40 @@ private:
     if (is_searched({ends[0], ends[1], from, to})) return;
     m_lines.push_back({ends[0], ends[1], from, to});
     const Translation_segment line(Translation_segment(p0, p1).at(from), Translation_segment(p0, p1).at(to));
-    if (hidden(line)) return;
+    if (hidden(line, pairs)) return;
     const Cell_weights w0 = along(weights(ends[0]), weights(ends[1]), from), w1 = along(weights(ends[0]), weights(ends[1]), to);
     for (CGAL::Sign side : {CGAL::POSITIVE, CGAL::NEGATIVE}) {
       int k = 0;
       while (k < 3 && s[k] != side) ++k;
       if (k == 3) continue; // no corner on that side: the side is another cell's
-      // Towards corner k from p0, in homogeneous coordinates (a positive multiple).
+      // Towards corner k from the line's first end, in homogeneous coordinates (a positive multiple).
       Vec3<Exact_nt> towards;
-      for (int c = 0; c < 3; ++c) towards[c] = T[k].X[c] * line.a.W - line.a.X[c] * T[k].W;
+      for (int x = 0; x < 3; ++x) towards[x] = corners[k].X[x] * line.a.W - line.a.X[x] * corners[k].W;
       m_ends.clear();
       m_search.free_ends(line, m_directions, m_count, m_ends, {}, &towards);
-      for (std::size_t i = 0; i < m_ends.size(); ++i) {
-        if (i > 0 && compare(m_ends[i], m_ends[i - 1]) == CGAL::ZERO) continue;
-        const Cell_weights w = along(w0, w1, m_ends[i]);
-        bool known = false;
-        for (std::size_t j = first; j < out.size() && !known; ++j) known = out[j] == w;
-        if (!known) out.push_back(w);
+      if (!m_ends.empty()) {
+        m_found = in_cell(S, along(w0, w1, m_ends.front()));
+        return;
       }
     }
   }
 
-  /// Do intervals show that one of the cell's pairs crosses on all of s (any perturbation)?
-  /// The last pair that did is tried first.
-  bool hidden(const Translation_segment& s)
+  /// Do intervals show that one of `pairs` crosses on all of s (any perturbation)? The last
+  /// pair that did is tried first.
+  bool hidden(const Translation_segment& s, const std::vector<std::uint32_t>& pairs)
   {
     const Vec3<Interval> a = enclosure(s.a), b = enclosure(s.b);
-    if (m_last_cover < m_pairs.size() &&
-        m_filter.crossing_range(m_pairs[m_last_cover].first, m_pairs[m_last_cover].second, a, b).covers_segment())
-      return true;
-    for (std::size_t k = 0; k < m_pairs.size(); ++k)
-      if (m_filter.crossing_range(m_pairs[k].first, m_pairs[k].second, a, b).covers_segment()) {
-        m_last_cover = k;
+    auto covers = [&](const Pair& pair) { return m_filter.crossing_range(pair.first, pair.second, a, b).covers_segment(); };
+    if (m_last_cover && covers(*m_last_cover)) return true;
+    for (std::uint32_t i : pairs)
+      if (m_pairs[i].pair != m_last_cover && covers(m_pairs[i].pair)) {
+        m_last_cover = m_pairs[i].pair;
         return true;
       }
     return false;
   }
 
-  /// Was this piece (the same line, clipped to the same parameters) searched in this cell?
+  /// Was this piece (the same line, clipped to the same parameters) searched in this sub-cell?
   bool is_searched(const Line_piece& piece) const
   {
     auto same = [](const Border_point& x, const Border_point& y) { return x.edge == y.edge && compare(x.l, y.l) == CGAL::ZERO; };
@@ -207,8 +309,29 @@ private:
     return false;
   }
 
-  static Exact_point point(const std::array<Exact_point, 3>& T, const Border_point& p)
-  { return Translation_segment(T[p.edge], T[(p.edge + 1) % 3]).at(p.l); }
+  /// The point of T with weights w / 2^depth over T's corners, exactly.
+  Exact_point exact_point(const std::array<std::int64_t, 3>& w, int depth) const
+  {
+    Exact_point x{{Exact_nt(0), Exact_nt(0), Exact_nt(0)}, m_T[0].W * Exact_nt(double(std::int64_t(1) << depth))};
+    for (int j = 0; j < 3; ++j)
+      if (w[j] != 0)
+        for (int c = 0; c < 3; ++c) x.X[c] += Exact_nt(double(w[j])) * m_T[j].X[c];
+    return x;
+  }
+
+  /// Weights over T's corners of the point with weights w over sub-cell S's corners.
+  static Cell_weights in_cell(const Sub_cell& S, const Cell_weights& w)
+  {
+    Cell_weights r = {0, 0, 0};
+    const CGAL::Exact_rational scale = CGAL::Exact_rational(1) / CGAL::Exact_rational(double(std::int64_t(1) << S.depth));
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        if (S.corner[k][j] != 0) r[j] += w[k] * CGAL::Exact_rational(double(S.corner[k][j])) * scale;
+    return r;
+  }
+
+  static Exact_point point(const std::array<Exact_point, 3>& corners, const Border_point& p)
+  { return Translation_segment(corners[p.edge], corners[(p.edge + 1) % 3]).at(p.l); }
 
   static Cell_weights weights(const Border_point& p)
   {
@@ -232,9 +355,15 @@ private:
   const Direction* m_directions = nullptr;
   std::uint32_t m_count = 0;
   std::size_t m_cells = 0;
-  std::vector<Pair> m_pairs; // of the current cell, that may cross in it
-  std::size_t m_last_cover = 0;
-  std::vector<Line_piece> m_lines; // searched in the current cell
+  bool m_searched = false;                 // were lines of the current cell searched?
+  std::optional<Cell_weights> m_found;     // its island point
+  std::array<Exact_point, 3> m_T;          // the current cell's corners, over a common denominator
+  std::array<Vec3<Interval>, 3> m_e;       // and their enclosures
+  std::vector<Cell_pair> m_pairs;          // whose crossing sets' borders may cross the current cell
+  std::array<std::optional<Pair>, 4> m_recent_covers; // the last pairs that covered a cell
+  std::size_t m_next_recent = 0;
+  std::optional<Pair> m_last_cover;        // the last pair that hid a line
+  std::vector<Line_piece> m_lines;         // searched in the current sub-cell
   std::vector<Segment_parameter> m_ends;
 };
 

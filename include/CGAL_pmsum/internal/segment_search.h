@@ -95,16 +95,6 @@ struct Translation_segment
   }
 };
 
-/// Counters of the segment searches.
-struct Segment_search_statistics
-{
-  std::size_t segments = 0;       // searched segments
-  std::size_t interval_exits = 0; // a witness crosses on all of it, by intervals alone
-  std::size_t quick_exits = 0;    // decided by hops or by one pair crossing at both ends
-  std::size_t pair_tests = 0;     // item-pair tests at elements
-  std::size_t run_queries = 0;    // full CD queries of non-colliding runs
-};
-
 /// The free parts of segments of translations (see the file comment). One per thread, on
 /// that thread's CD filter.
 class Segment_search
@@ -112,7 +102,8 @@ class Segment_search
 public:
   explicit Segment_search(Cd_filter& filter) : m_filter(filter) {}
 
-  const Segment_search_statistics& statistics() const { return m_stats; }
+  /// Number of segments searched.
+  std::size_t searched_segments() const { return m_segments; }
 
   /// Appends to `ends` the parameters of the ends of the free parts of s (sorted, each free
   /// part giving its first and last parameter, equal for an isolated free point). Points are
@@ -125,7 +116,7 @@ public:
                  const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses = {},
                  const Vec3<Exact_nt>* side = nullptr)
   {
-    ++m_stats.segments;
+    ++m_segments;
     m_directions = directions;
     m_count = count;
     m_side = side;
@@ -133,9 +124,7 @@ public:
     m_a = enclosure(s.a);
     m_b = enclosure(s.b);
     // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
-    if (certainly_covered(witnesses)) { ++m_stats.interval_exits; return; }
-    if (covered_by_hops(s, witnesses[0])) { ++m_stats.quick_exits; return; }
-    if (one_pair_covers(s, witnesses)) { ++m_stats.quick_exits; return; }
+    if (certainly_covered(witnesses) || covered_by_hops(s, witnesses[0]) || one_pair_covers(s, witnesses)) return;
 
     // Each pair's crossing set: runs of its own elements (between the roots of its own
     // predicates). The elements of the segment: R_0 = 0 < R_1 < ... < R_k = 1, the ends of
@@ -183,7 +172,6 @@ public:
       std::size_t rep = e;
       while (rep <= end && rep % 2 == 0) ++rep;
       if (rep > end) rep = e;
-      ++m_stats.run_queries;
       if (free_at(s, roots, rep)) {
         ends.push_back(roots[e / 2]);             // a point, or an interval's left root
         ends.push_back(roots[(end + 1) / 2]);     // a point, or an interval's right root
@@ -200,12 +188,7 @@ private:
   bool one_pair_covers(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses)
   {
     auto crosses_at_both_ends = [&](const std::pair<Index, Index>& pair) {
-      for (const Exact_point* x : {&s.a, &s.b}) {
-        ++m_stats.pair_tests;
-        set_query(*x, false);
-        if (!m_filter.pair_crosses_here(pair.first, pair.second)) return false;
-      }
-      return true;
+      return m_filter.pair_crosses_at(pair.first, pair.second, {&s.a, &s.b}, m_directions, m_count, {m_side, nullptr});
     };
     for (const auto& pair : {witnesses[0], witnesses[1], m_last_quick, m_filter.last_crossing()})
       if (pair && crosses_at_both_ends(*pair)) { m_last_quick = pair; return true; }
@@ -392,13 +375,12 @@ private:
   bool crosses_on(const Translation_segment& s, const std::vector<Segment_parameter>& local, std::size_t e,
                   const std::pair<Index, Index>& pair)
   {
-    ++m_stats.pair_tests;
     set_element(s, local, e);
     return m_filter.pair_crosses_here(pair.first, pair.second);
   }
 
   Cd_filter& m_filter;
-  Segment_search_statistics m_stats;
+  std::size_t m_segments = 0;
   const Direction* m_directions = nullptr;
   std::uint32_t m_count = 0;
   Vec3<Exact_nt> m_forward;

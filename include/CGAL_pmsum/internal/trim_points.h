@@ -20,7 +20,8 @@
 // known to be inside (tested, certified or reused) are searched. A cell whose corners are
 // all free or covered needs nothing: its points are within f(T) <= d/2 of a corner, and
 // that corner within d/2 of an output point. (Islands, pieces of F strictly inside one
-// cell, are bounded by trim curves only; they are not found this way: see the user manual.)
+// cell, are bounded by trim curves only; they are not found this way but by the island
+// search, island_search.h, in the cells with an inside corner whose edges have no trim point.)
 
 #ifndef CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
 #define CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
@@ -142,6 +143,14 @@ public:
   }
   /// Bound of the diameter of every cell.
   double diameter() const { return m_diameter; }
+
+  /// Lattice point k, rounded to doubles (P and Q: the meshes of the pair's features).
+  Point3 position(std::size_t k, const Mesh_data& P, const Mesh_data& Q) const
+  {
+    Point3 x;
+    for (int c = 0; c < 3; ++c) x[c] = sum_coordinate<double>(P, Q, m_p[k], m_q[k], nullptr, c);
+    return x;
+  }
 
   /// The lattice point of the candidate (p, q) of this pair (interior samples).
   std::size_t index_of(const Sample& p, const Sample& q) const
@@ -278,8 +287,8 @@ struct Corner_info
 
 /// The trim points of a facet lattice (see the file comment): the free-part ends of the
 /// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
-/// point i, computing it if needed), then, with `islands`, the island points of those cells
-/// whose edges had none (island_search.h), appended to `out` in a canonical order. A segment or a cell is
+/// point i, computing it if needed), then, with `islands`, an island point of each of those
+/// cells whose edges had none (island_search.h), appended to `out` in a canonical order. A segment or a cell is
 /// skipped without a search when `certified(lo, hi, ball)` tells that its bounding box is
 /// inside the sum (by octree leaves; `ball`: also by the certificate's balls, costlier, for
 /// cells), or a segment's ends lie in one certified octree leaf.
@@ -311,10 +320,7 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
   };
   std::vector<std::optional<Point3>> rounded(lattice.size()); // the same, rounded
   auto position = [&](std::uint32_t k) -> const Point3& {
-    if (!rounded[k]) {
-      rounded[k].emplace();
-      for (int c = 0; c < 3; ++c) (*rounded[k])[c] = sum_coordinate<double>(P, Q, lattice.p(k), lattice.q(k), nullptr, c);
-    }
+    if (!rounded[k]) rounded[k] = lattice.position(k, P, Q);
     return *rounded[k];
   };
   auto certified = [&](std::initializer_list<std::uint32_t> corners, bool ball) {
@@ -352,18 +358,17 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     }
   }
   if (!islands) return;
-  std::vector<Cell_weights> island;
   for (std::size_t i : cells) {
     const auto& cell = lattice.cells()[i];
     bool has_ends = false;
     for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)];
     if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
-    island.clear();
-    islands->island_points({point(cell[0]), point(cell[1]), point(cell[2])},
-                          {corner(cell[0]).witness, corner(cell[1]).witness, corner(cell[2]).witness}, directions,
-                          fp.number_of_directions, island);
-    for (const Cell_weights& w : island)
-      add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), w[1], lattice.p(cell[2]), lattice.q(cell[2]), w[2], {}, {}});
+    const std::optional<Cell_weights> w =
+      islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])},
+                            {corner(cell[0]).witness, corner(cell[1]).witness, corner(cell[2]).witness}, directions,
+                            fp.number_of_directions);
+    if (w)
+      add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}});
   }
 }
 
