@@ -165,7 +165,18 @@ inline Soup blocks(int n, double h)
   return s;
 }
 
-/// Converts a soup to a face graph (Surface_mesh, Polyhedron_3, ...).
+/// Two unit cubes side by side along x with a gap w between them, standing on a floor box
+/// 2 + w long and 1/2 thick if `floor` (boxes that touch along faces), else apart (two
+/// solids): summed with a convex Q whose extent along x is w - delta, a slot (or a slit) of
+/// width delta.
+inline Soup slot_blocks(double w, bool floor)
+{
+  Soup s = box({0, 0, 0}, {1, 1, 1});
+  s.append(box({1 + w, 0, 0}, {2 + w, 1, 1}));
+  if (floor) s.append(box({0, 0, -0.5}, {2 + w, 1, 0}));
+  return s;
+}
+
 /// A 4 x 4 x 4 block with a square tunnel 1 x 1 along z through its middle (four boxes that
 /// touch along faces).
 inline Soup tunnel_block()
@@ -189,6 +200,7 @@ inline Soup turned_cube(double side, double c, double sn)
   return convex_hull(pts);
 }
 
+/// Converts a soup to a face graph (Surface_mesh, Polyhedron_3, ...).
 template <class Mesh>
 Mesh to_mesh(const Soup& s)
 {

@@ -243,6 +243,38 @@ TEST_CASE("narrow passages: exact and covered down to a passage of d/1000, turne
   }
 }
 
+TEST_CASE("narrow slots and slits: exact and covered for a gap of d down to d/1000, turned and rotated", "[validation][narrow]")
+{
+  // Two unit blocks with a gap w between them, on a floor or not, + a cube turned about z
+  // (cos 0.8, sin 0.6) whose extent along x is w - delta: the sum keeps a slot of width
+  // delta. Its floor is a visible strip of width delta between two trim curves; without a
+  // floor it is a slit through the whole part. (The strip lies within delta of the slot's
+  // walls, whose points cover it: unlike the tunnel above, this family passes without trim
+  // points too; it guards exactness and coverage on thin gaps, turned and rotated.)
+  const double w = 0.5;
+  const double d = 0.04 * std::sqrt(2.5 * 2.5 + 1 + 4); // 4% of about the sum's diagonal
+  for (const bool floor : {true, false}) {
+    for (const double delta : {d, d / 10, d / 100, d / 1000}) {
+      for (const bool turn : {false, true}) {
+        Soup part = slot_blocks(w, floor), cube = turned_cube((w - delta) / 1.4, 0.8, 0.6);
+        if (turn) { part = rotated(part); cube = rotated(cube); }
+        const Mesh P = to_mesh<Mesh>(part), Q = to_mesh<Mesh>(cube);
+        const Reference_nef ref(P, Q, false);
+        CGAL::Pmsum::Statistics stats;
+        std::vector<Record> records;
+        CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records), CGAL::parameters::statistics(stats));
+        const Outcome o = check(records, P, Q, d, ref);
+        INFO((floor ? "slot" : "slit") << " of " << delta / d << " d" << (turn ? ", rotated" : "") << ": points "
+                                       << o.points << ", trim points " << stats.trim_points << ", shells " << o.shells
+                                       << ", worst coverage " << o.worst << " d");
+        CHECK(o.off_boundary == 0);
+        CHECK(o.covered == o.shells);
+        CHECK(o.worst < 1);
+      }
+    }
+  }
+}
+
 #include <CGAL_pmsum/Penetration_depth.h>
 
 #include <CGAL/AABB_traits.h>
