@@ -85,7 +85,8 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 
   /// With trim points, also search the islands of the convolution facets (default `false`):
   /// visible pieces strictly inside one lattice cell, such as a void of the sum smaller than
-  /// the sample spacing (user manual, section 4). Exact; several times slower on fine meshes.
+  /// the sample spacing (user manual, section 4). Exact; slower, many times so on inputs with
+  /// many coplanar faces.
   Named_parameters<bool, internal_np::search_islands_t, Named_parameters>
   search_islands(bool b) const { return {b, *this}; }
 
