@@ -126,6 +126,7 @@ struct Crossing_slabs
   {
     Vec3<Interval> w;
     Interval lo, hi;
+    int axis; // its index among the eleven axes (Cd_filter::axis())
 
     /// Where T lies with respect to this slab. Needs rounding towards +infinity.
     Where where(const std::array<Vec3<Interval>, 3>& T) const
@@ -328,7 +329,7 @@ public:
     CGAL::Protect_FPU_rounding<true> guard;
     bool inside_known = true;
     r.in_from = -HUGE_VAL; r.in_to = HUGE_VAL;
-    for_each_slab(u, v, [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
+    for_each_slab(u, v, [&](int, const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
       const Interval wa = dot(w, a), wb = dot(w, b), slope = wb - wa;
       if (slope.inf() > 0 || slope.sup() < 0) { // lo < wa + l slope < hi
         const Interval e1 = (lo - wa) / slope, e2 = (hi - wa) / slope;
@@ -362,61 +363,136 @@ public:
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
     r.first.known = true;
     bool inside = true;
-    auto add = [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
-      const Crossing_slabs::Slab s{w, lo, hi};
+    for_each_slab(u, v, [&](int k, const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
+      const Crossing_slabs::Slab s{w, lo, hi, k};
       const Where where = s.where(T);
       if (where == Where::outside) { r = {{}, where}; return false; } // the slabs stay unknown
       inside = inside && where == Where::inside;
       r.first.slabs.push_back(s);
       return true;
-    };
-    bool all = true;
-    for_each_slab(u, v, [&](const Vec3<Interval>& w, const Interval& lo, const Interval& hi) { return all = add(w, lo, hi); });
-    if (all && inside) r.second = Where::inside;
+    });
+    if (r.second != Where::outside && inside) r.second = Where::inside;
     return r;
   }
 
-  /// Calls f(w, lo, hi) for the eleven axes w normal to the facets of B - A (A: moving
-  /// triangle u, B: static triangle v): lo < w.t < hi for every t in B - A (enclosures),
-  /// until f returns false. Needs rounding towards +infinity.
+  /// Axis k of the eleven normal to the facets of B - A (A: moving triangle u, B: static
+  /// triangle v): the normal of A, of B, then the cross products of edge i of A and edge j
+  /// of B (k = 2 + 3i + j), unnormalised; Interval: an enclosure.
+  template <class NT>
+  Vec3<NT> axis(Index u, Index v, int k) const
+  {
+    if constexpr (std::is_same<NT, Interval>::value)
+      if (k < 2) return k == 0 ? m_moving.normals[u] : m_static.normals[v];
+    auto edge = [](const Tree_mesh& m, Index t, int i) {
+      const auto& tri = m.mesh->triangles[t];
+      return to_nt<NT>(m.base[tri[(i + 1) % 3]]) - to_nt<NT>(m.base[tri[i]]);
+    };
+    if (k < 2) return k == 0 ? cross(edge(m_moving, u, 0), edge(m_moving, u, 1)) : cross(edge(m_static, v, 0), edge(m_static, v, 1));
+    return cross(edge(m_moving, u, (k - 2) / 3), edge(m_static, v, (k - 2) % 3));
+  }
+
+  /// Calls f(k, w, lo, hi) for the eleven axes w = axis(u, v, k): lo < w.t < hi for every
+  /// t in B - A (enclosures), until f returns false. Skips zero axes. Needs rounding
+  /// towards +infinity.
   template <class F>
   void for_each_slab(Index u, Index v, const F& f) const
   {
-    if (!slab(u, v, m_moving.normals[u], f) || !slab(u, v, m_static.normals[v], f)) return;
-    const auto& tm = m_moving.mesh->triangles[u];
-    const auto& ts = m_static.mesh->triangles[v];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const Vec3<Interval> ea = to_nt<Interval>(m_moving.base[tm[(i + 1) % 3]]) - to_nt<Interval>(m_moving.base[tm[i]]);
-        const Vec3<Interval> eb = to_nt<Interval>(m_static.base[ts[(j + 1) % 3]]) - to_nt<Interval>(m_static.base[ts[j]]);
-        if (!slab(u, v, cross(ea, eb), f)) return;
-      }
+    for (int k = 0; k < 11; ++k)
+      if (!slab(u, v, k, axis<Interval>(u, v, k), f)) return;
   }
 
-  /// f(w, lo, hi) for the extent [lo, hi] of B - A along w (any w: B - A is the convex hull
-  /// of the B_k - A_i): lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i.
+  /// f(k, w, lo, hi) for the extent [lo, hi] of B - A along w (any w: B - A is the convex
+  /// hull of the B_k - A_i): lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i.
   /// Skips the zero vector (returns true).
   template <class F>
-  bool slab(Index u, Index v, const Vec3<Interval>& w, const F& f) const
+  bool slab(Index u, Index v, int k, const Vec3<Interval>& w, const F& f) const
   {
     if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
       return true;
     const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
-    return f(w, b.first - a.second, b.second - a.first);
+    return f(k, w, b.first - a.second, b.second - a.first);
   }
 
-  /// Starts a plane of translations, that of the triangle T (boxes holding its corners):
-  /// may_meet_plane() then tests pairs against it, each triangle's extent along the plane's
-  /// normal computed once per plane.
-  void set_plane(const std::array<Vec3<Interval>, 3>& T)
+  /// Starts a plane H of translations, that of the triangle T (exact corners, not
+  /// collinear), whose points are perturbed as by set_point(x, directions, count, prefix)
+  /// with prefix directions parallel to H: may_meet_plane() and on_plane() then tell about
+  /// pairs, each triangle's extent along H's normal computed once per plane.
+  void set_plane(const std::array<Exact_point, 3>& T, const Direction* directions, std::uint32_t count)
   {
-    CGAL::Protect_FPU_rounding<true> guard;
     Plane& p = m_plane;
-    p.normal = cross(T[1] - T[0], T[2] - T[0]);
-    std::tie(p.low, p.high) = Crossing_slabs::extent(p.normal, T);
+    auto relative = [&](int k) { // W0 Wk (T[k] - T[0]), a positive multiple
+      Vec3<Exact_nt> r;
+      for (int c = 0; c < 3; ++c) r[c] = T[k].X[c] * T[0].W - T[0].X[c] * T[k].W;
+      return r;
+    };
+    p.exact_normal = cross(relative(1), relative(2));
+    p.exact_point = T[0];
+    // The side of H to which the perturbation moves its points: the first v of the chain
+    // (directions, then axes) with n.v != 0 (see perturbation_sign()).
+    m_dirs = directions; m_dir_count = count; m_dir_first = 0;
+    m_prefix = {};
+    p.side = perturbation_sign([&](auto nt) {
+      using NT = decltype(nt);
+      if constexpr (std::is_same<NT, Interval>::value)
+        return Vec3<Interval>{CGAL::to_interval(p.exact_normal[0]), CGAL::to_interval(p.exact_normal[1]),
+                              CGAL::to_interval(p.exact_normal[2])};
+      else return p.exact_normal;
+    });
+    CGAL::Protect_FPU_rounding<true> guard;
+    std::array<Vec3<Interval>, 3> e;
+    for (int k = 0; k < 3; ++k) e[k] = enclosure(T[k]);
+    p.normal = cross(e[1] - e[0], e[2] - e[0]);
+    std::tie(p.low, p.high) = Crossing_slabs::extent(p.normal, e);
     ++p.stamp;
     p.moving.resize(m_moving.mesh->number_of_triangles());
     p.fixed.resize(m_static.mesh->number_of_triangles());
+  }
+
+  /// Where the pair (u, v) crosses on the plane H set by set_plane(), perturbed: nowhere
+  /// (`never`), or where all of its slabs but those of the axes in `ignored` hold the point.
+  /// A slab whose axis is not normal to H bounds a region of H by lines; one whose axis is
+  /// normal to H either holds all of H (ignored), or none of it (never), or has H as a
+  /// bounding plane: then the perturbation moves every point of H into it (ignored) or out
+  /// of it (never), the same for all. So intervals never leave undecided the pairs whose
+  /// crossing sets have H as a supporting plane (coplanar faces). Exact.
+  struct Plane_crossing
+  {
+    bool never = false;
+    std::uint16_t ignored = 0;
+  };
+  Plane_crossing on_plane(Index u, Index v) const
+  {
+    Plane_crossing r;
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    const Plane& p = m_plane;
+    for (int k = 0; k < 11 && !r.never; ++k) {
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const Vec3<Interval> w = cross(axis<Interval>(u, v, k), p.normal);
+        if (!(w[0].do_overlap(0) && w[1].do_overlap(0) && w[2].do_overlap(0))) continue; // not normal to H
+      }
+      const Vec3<Exact_nt> x = axis<Exact_nt>(u, v, k);
+      auto zero = [](const Vec3<Exact_nt>& y) { return CGAL::is_zero(y[0]) && CGAL::is_zero(y[1]) && CGAL::is_zero(y[2]); };
+      if (zero(x) || !zero(cross(x, p.exact_normal))) continue; // no slab, or not normal to H
+      // Compare the extent of B - A along H's normal n with H's position n.X / W.
+      auto range = [&](const Tree_mesh& m, Index t) {
+        const auto& tri = m.mesh->triangles[t];
+        std::pair<Exact_nt, Exact_nt> e;
+        for (int i = 0; i < 3; ++i) {
+          const Exact_nt y = dot(p.exact_normal, to_nt<Exact_nt>(m.base[tri[i]])) * p.exact_point.W;
+          if (i == 0 || y < e.first) e.first = y;
+          if (i == 0 || y > e.second) e.second = y;
+        }
+        return e;
+      };
+      const auto a = range(m_moving, u), b = range(m_static, v);
+      const Exact_nt h = dot(p.exact_normal, p.exact_point.X), lo = b.first - a.second, hi = b.second - a.first;
+      if (lo < h && h < hi) r.ignored |= std::uint16_t(1) << k;
+      else if (lo < hi && ((h == lo && p.side == CGAL::POSITIVE) || (h == hi && p.side == CGAL::NEGATIVE)))
+        r.ignored |= std::uint16_t(1) << k;
+      else r.never = true;
+    }
+    return r;
   }
 
   /// Can the crossing set B - A of the pair (u, v) meet the plane set by set_plane()?
@@ -764,6 +840,9 @@ private:
     };
     Vec3<Interval> normal;
     double low = 0, high = 0; // of the plane along its normal
+    Vec3<Exact_nt> exact_normal;
+    Exact_point exact_point; // a point of the plane
+    CGAL::Sign side = CGAL::ZERO; // of the perturbation, along exact_normal
     std::uint64_t stamp = 0;
     std::vector<Extent> moving, fixed;
   } m_plane;

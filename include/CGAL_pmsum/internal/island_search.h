@@ -32,9 +32,17 @@
 // some pair's answer must change (if every pair's answer were constant near y, one crossing
 // would hide all of it, and without crossings the containment answer would be constant), so
 // the border of that pair's crossing set passes through y, and no pair holds y inside. The
-// lines searched are then those of the pairs whose borders may cross the sub-cells left,
-// clipped to those sub-cells: far fewer than T's, and most cells need none. (Bare edges
-// have no slabs: a sub-cell left with only those is searched without halving it further.)
+// lines searched are then those of the pairs whose borders may cross the sub-cells left (in
+// a sub-cell where the pair was kept), each once per cell, over all of T: far fewer than
+// T's, and most cells need none. (Bare edges have no slabs: a sub-cell left with only those
+// is not halved further.)
+//
+// The cells lie in the plane H of their facet, whose points are all perturbed to the same
+// side of H. A pair whose crossing set has H as a supporting plane (coplanar faces) would
+// never be decided by intervals: the slab normal to H has H on its border. But on H the
+// perturbation decides that slab alike everywhere (Cd_filter::on_plane(), exact, once per
+// pair and facet): the pair crosses nowhere on H, or its crossing set on H is bounded by its
+// other slabs only. Likewise a predicate zero on all of H has no line to search.
 
 #ifndef CGAL_PMSUM_INTERNAL_ISLAND_SEARCH_H
 #define CGAL_PMSUM_INTERNAL_ISLAND_SEARCH_H
@@ -46,6 +54,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -67,42 +76,47 @@ public:
 
   Island_search(Cd_filter& filter, Segment_search& search) : m_filter(filter), m_search(search) {}
 
-  /// Number of cells whose lines were searched (in some sub-cell).
+  /// Number of cells whose lines were searched.
   std::size_t searched_cells() const { return m_cells; }
+
+  /// Starts the cells of a facet, the triangle F (exact corners, not collinear) of
+  /// translations, whose points are perturbed along the directions.
+  void start_facet(const std::array<Exact_point, 3>& F, const Direction* directions, std::uint32_t count)
+  {
+    m_directions = directions;
+    m_count = count;
+    m_filter.set_plane(F, directions, count);
+    m_on_plane.clear();
+  }
 
   /// A point (weights over T's corners) of an island of cell T (corners exact, not
   /// collinear), exactly on the boundary of the sum, if T has islands: the first end of a
   /// free part found on the lines that can bound one. It is closer than diam(T) to every
   /// point of every island of T, which is all that coverage needs. None if one of the
-  /// `witnesses` (pairs crossing at some corner) crosses at all three. Points are perturbed
-  /// along the directions.
+  /// `witnesses` (pairs crossing at some corner) crosses at all three. T lies in the facet
+  /// of start_facet().
   std::optional<Cell_weights> island_point(const std::array<Exact_point, 3>& T,
-                                           const std::array<std::optional<Pair>, 3>& witnesses,
-                                           const Direction* directions, std::uint32_t count)
+                                           const std::array<std::optional<Pair>, 3>& witnesses)
   {
-    m_directions = directions;
-    m_count = count;
     for (const auto& w : witnesses)
-      if (w && m_filter.pair_crosses_at(w->first, w->second, {&T[0], &T[1], &T[2]}, directions, count)) return {};
+      if (w && m_filter.pair_crosses_at(w->first, w->second, {&T[0], &T[1], &T[2]}, m_directions, m_count)) return {};
     Sub_cell whole{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, 0, {}};
     for (int k = 0; k < 3; ++k) whole.e[k] = m_e[k] = enclosure(T[k]);
     m_pairs.clear();
     std::vector<std::uint32_t> border; // of m_pairs: those whose crossing sets' borders may cross T
-    m_filter.set_plane(whole.e);
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      // Neighbouring cells are often covered by the same pair: the last ones that did first.
-      for (const auto& pair : m_recent_covers)
-        if (pair && m_filter.crossing_slabs(pair->first, pair->second, whole.e).second == Where::inside) return {};
-    }
+    // Neighbouring cells are often covered by the same pair: the last ones that did first.
+    for (const auto& pair : m_recent_covers)
+      if (pair && crossing_slabs(*pair, whole.e).second == Where::inside) return {};
     bool covered = false;
     m_filter.for_each_overlapping_pair(hull(hull(whole.e[0], whole.e[1]), whole.e[2]), [&](Index u, Index v) {
-      CGAL::Protect_FPU_rounding<true> guard;
-      if (!m_filter.may_meet_plane(u, v)) return false;
-      auto [slabs, w] = m_filter.crossing_slabs(u, v, whole.e);
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        if (!m_filter.may_meet_plane(u, v)) return false;
+      }
+      auto [slabs, w] = crossing_slabs({u, v}, whole.e);
       if (w == Where::border) {
         border.push_back(std::uint32_t(m_pairs.size()));
-        m_pairs.push_back({{u, v}, std::move(slabs)});
+        m_pairs.push_back({{u, v}, std::move(slabs), &on_plane({u, v})});
       }
       if (w != Where::inside) return false;
       m_recent_covers[m_next_recent++ % m_recent_covers.size()] = Pair(u, v);
@@ -117,10 +131,12 @@ public:
             for (int c = 0; c < 3; ++c) m_T[k].X[c] *= T[j].W;
         m_T[k].W = T[0].W * T[1].W * T[2].W;
       }
-    m_searched = false;
     m_found.reset();
+    m_leaves.clear();
     search(whole, border);
-    m_cells += m_searched;
+    if (m_leaves.empty()) return {};
+    ++m_cells;
+    search_lines(whole);
     return m_found;
   }
 
@@ -136,21 +152,64 @@ private:
 
   using Where = Crossing_slabs::Where;
 
+  /// What is known of a pair on the current facet's plane: where it may cross
+  /// (Cd_filter::on_plane()), and which of its predicates (bit i: the i-th of
+  /// Cd_filter::for_each_predicate()) are known to be zero on all of the plane (`flat`): a
+  /// flat one has the same perturbed sign everywhere there, no line to search.
+  struct Plane_pair
+  {
+    Cd_filter::Plane_crossing crossing;
+    std::uint32_t flat = 0;
+  };
+
+  /// The pair's Plane_pair, computed on first use in the facet.
+  Plane_pair& on_plane(const Pair& pair)
+  {
+    const std::uint64_t key = std::uint64_t(pair.first) << 32 | pair.second;
+    auto it = m_on_plane.find(key);
+    if (it == m_on_plane.end()) it = m_on_plane.emplace(key, Plane_pair{m_filter.on_plane(pair.first, pair.second)}).first;
+    return it->second;
+  }
+
+  /// The slabs of the pair's crossing set on the facet's plane, and where the triangle e of
+  /// translations (boxes) lies: Cd_filter::crossing_slabs(), and if that leaves it
+  /// undecided, what Cd_filter::on_plane() knows.
+  std::pair<Crossing_slabs, Where> crossing_slabs(const Pair& pair, const std::array<Vec3<Interval>, 3>& e)
+  {
+    std::pair<Crossing_slabs, Where> r;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      r = m_filter.crossing_slabs(pair.first, pair.second, e);
+    }
+    if (r.second != Where::border || !r.first.known) return r;
+    const Cd_filter::Plane_crossing& c = on_plane(pair).crossing;
+    if (c.never) return {{}, Where::outside};
+    if (c.ignored == 0) return r;
+    auto& slabs = r.first.slabs;
+    slabs.erase(std::remove_if(slabs.begin(), slabs.end(), [&](const Crossing_slabs::Slab& s) { return c.ignored >> s.axis & 1; }),
+                slabs.end());
+    CGAL::Protect_FPU_rounding<true> guard;
+    r.second = r.first.where(e);
+    return r;
+  }
+
   /// A pair that may cross in the current cell, with its crossing set's slabs.
   struct Cell_pair
   {
     Pair pair;
     Crossing_slabs slabs;
+    Plane_pair* plane;
   };
 
-  /// The island points of sub-cell S, whose `pairs` may have their crossing sets' borders
-  /// in S: halved while S is shallower than max_depth, dropping the sub-cells that one pair
-  /// covers or that no border meets (no island's edge lies there: see the file comment).
+  /// Puts into m_leaves the sub-cells of S (whose `pairs` may have their crossing sets'
+  /// borders in S) where an island's edge can be: S is halved while shallower than
+  /// max_depth, dropping the sub-cells that one pair covers or that no border meets (no
+  /// island's edge lies there: see the file comment).
   void search(const Sub_cell& S, const std::vector<std::uint32_t>& pairs)
   {
     // Halving helps only the pairs whose crossing sets' slabs are known (not bare edges).
     const bool known = std::any_of(pairs.begin(), pairs.end(), [&](std::uint32_t i) { return m_pairs[i].slabs.known; });
-    if (S.depth == max_depth || !known) { search_lines(S, pairs); return; }
+    if (S.depth == max_depth || !known) { m_leaves.push_back({S, pairs}); return; }
     const auto& c = S.corner;
     auto mid = [&](int i, int j) {
       return std::array<std::int64_t, 3>{c[i][0] + c[j][0], c[i][1] + c[j][1], c[i][2] + c[j][2]};
@@ -180,11 +239,10 @@ private:
         }
       }
       if (!covered && !kept.empty()) search(C, kept);
-      if (m_found) return;
     }
   }
 
-  /// A point on the border of a sub-cell: parameter l of edge k (from corner k to k + 1).
+  /// A point on the border of the cell: parameter l of edge k (from corner k to k + 1).
   struct Border_point
   {
     int edge;
@@ -198,43 +256,63 @@ private:
     Segment_parameter from, to;
   };
 
-  /// Searches the lines of the predicates of `pairs` in the sub-cell S (search_line()).
-  void search_lines(const Sub_cell& S, const std::vector<std::uint32_t>& pairs)
+  /// Searches, in the cell T, the lines of the predicates of each pair that may cross a
+  /// leaf (m_leaves) where that pair was kept (search_line()): each line once per cell.
+  void search_lines(const Sub_cell& T)
   {
-    m_searched = true;
+    std::vector<std::vector<std::uint32_t>> leaves(m_pairs.size()); // where each pair was kept
+    std::vector<std::uint32_t> pairs;                                // kept in some leaf
+    for (std::uint32_t k = 0; k < m_leaves.size(); ++k)
+      for (std::uint32_t i : m_leaves[k].pairs) {
+        if (leaves[i].empty()) pairs.push_back(i);
+        leaves[i].push_back(k);
+      }
     std::array<Exact_point, 3> corners;
-    for (int k = 0; k < 3; ++k) corners[k] = exact_point(S.corner[k], S.depth);
+    for (int k = 0; k < 3; ++k) corners[k] = exact_point(T.corner[k], T.depth);
     m_lines.clear();
     for (std::uint32_t i : pairs) {
       const Pair& pair = m_pairs[i].pair;
+      Plane_pair& plane = *m_pairs[i].plane;
+      std::uint32_t bit = 1;
       m_filter.for_each_predicate(pair.first, pair.second,
-                                  [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
-                                      const Moving_point& d) { if (!m_found) search_line(S, corners, pair, pairs, a, b, c, d); });
+                                  [&](const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d) {
+                                    if (!m_found && !(plane.flat & bit) && meets_leaf(leaves[i], a, b, c, d) &&
+                                        !search_line(corners, pair, pairs, a, b, c, d))
+                                      plane.flat |= bit;
+                                    bit <<= 1;
+                                  });
       if (m_found) return;
     }
   }
 
-  /// The zero line of the predicate (a, b, c, d) of `pair` in the plane of the sub-cell S
-  /// (corners: its corners, exact), if it crosses S: the part of its piece in S where the
-  /// pair may cross (or bound a crossing) is searched from both sides (only from a side
-  /// holding a corner of S), unless one of `pairs` certainly crosses on all of it. Sets
-  /// m_found to the first end of a free part.
-  void search_line(const Sub_cell& S, const std::array<Exact_point, 3>& corners, const Pair& pair,
-                   const std::vector<std::uint32_t>& pairs, const Moving_point& a, const Moving_point& b, const Moving_point& c,
-                   const Moving_point& d)
+  /// May the zero line of the predicate (a, b, c, d) cross one of the `leaves` (intervals)?
+  bool meets_leaf(const std::vector<std::uint32_t>& leaves, const Moving_point& a, const Moving_point& b,
+                  const Moving_point& c, const Moving_point& d) const
   {
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      const Interval d0 = value_at_origin<Interval>(a, b, c, d);
-      const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
+    CGAL::Protect_FPU_rounding<true> guard;
+    const Interval d0 = value_at_origin<Interval>(a, b, c, d);
+    const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
+    for (std::uint32_t k : leaves) {
       bool positive = true, negative = true;
-      for (int k = 0; k < 3; ++k) {
-        const Interval v = d0 + dot(g, S.e[k]);
+      for (const Vec3<Interval>& x : m_leaves[k].cell.e) {
+        const Interval v = d0 + dot(g, x);
         positive = positive && v.inf() > 0;
         negative = negative && v.sup() < 0;
       }
-      if (positive || negative) return; // the line misses S
+      if (!positive && !negative) return true;
     }
+    return false;
+  }
+
+  /// The zero line of the predicate (a, b, c, d) of `pair` in the plane of the cell
+  /// (corners: its corners, exact), if it crosses the cell: the part of its piece there
+  /// where the pair may cross (or bound a crossing) is searched from both sides (only from
+  /// a side holding a corner of the cell), unless one of `pairs` certainly crosses on all
+  /// of it. Sets m_found to the first end of a free part. False iff the predicate is zero
+  /// on all of the plane.
+  bool search_line(const std::array<Exact_point, 3>& corners, const Pair& pair, const std::vector<std::uint32_t>& pairs,
+                   const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d)
+  {
     const Exact_nt d0 = value_at_origin<Exact_nt>(a, b, c, d);
     const Vec3<Exact_nt> g = gradient<Exact_nt>(a, b, c, d);
     std::array<Exact_nt, 3> D; // W times the predicate at corner k (a common W)
@@ -243,7 +321,7 @@ private:
       D[k] = corners[k].W * d0 + dot(g, corners[k].X);
       s[k] = CGAL::sign(D[k]);
     }
-    if (s[0] == CGAL::ZERO && s[1] == CGAL::ZERO && s[2] == CGAL::ZERO) return; // constant on the plane
+    if (s[0] == CGAL::ZERO && s[1] == CGAL::ZERO && s[2] == CGAL::ZERO) return false; // constant on the plane
     std::vector<Border_point> ends;
     for (int k = 0; k < 3; ++k) {
       const int j = (k + 1) % 3;
@@ -254,18 +332,18 @@ private:
         ends.push_back({k, l});
       }
     }
-    if (ends.size() != 2) return;
+    if (ends.size() != 2) return true;
     // Only where the pair's crossing set, or its closure, can be: [low, high] (intervals).
     // Other pairs can share the line with other ranges: each clipped piece is searched once.
     const Exact_point p0 = point(corners, ends[0]), p1 = point(corners, ends[1]);
     const Crossing_range range = m_filter.crossing_range(pair.first, pair.second, enclosure(p0), enclosure(p1));
-    if (range.misses_segment()) return;
+    if (range.misses_segment()) return true;
     const Segment_parameter from = range.low > 0 ? Segment_parameter{Exact_nt(range.low), Exact_nt(1)} : Segment_parameter::zero();
     const Segment_parameter to = range.high < 1 ? Segment_parameter{Exact_nt(range.high), Exact_nt(1)} : Segment_parameter::one();
-    if (is_searched({ends[0], ends[1], from, to})) return;
+    if (is_searched({ends[0], ends[1], from, to})) return true;
     m_lines.push_back({ends[0], ends[1], from, to});
     const Translation_segment line(Translation_segment(p0, p1).at(from), Translation_segment(p0, p1).at(to));
-    if (hidden(line, pairs)) return;
+    if (hidden(line, pairs)) return true;
     const Cell_weights w0 = along(weights(ends[0]), weights(ends[1]), from), w1 = along(weights(ends[0]), weights(ends[1]), to);
     for (CGAL::Sign side : {CGAL::POSITIVE, CGAL::NEGATIVE}) {
       int k = 0;
@@ -277,10 +355,11 @@ private:
       m_ends.clear();
       m_search.free_ends(line, m_directions, m_count, m_ends, {}, &towards);
       if (!m_ends.empty()) {
-        m_found = in_cell(S, along(w0, w1, m_ends.front()));
-        return;
+        m_found = along(w0, w1, m_ends.front());
+        return true;
       }
     }
+    return true;
   }
 
   /// Do intervals show that one of `pairs` crosses on all of s (any perturbation)? The last
@@ -319,17 +398,6 @@ private:
     return x;
   }
 
-  /// Weights over T's corners of the point with weights w over sub-cell S's corners.
-  static Cell_weights in_cell(const Sub_cell& S, const Cell_weights& w)
-  {
-    Cell_weights r = {0, 0, 0};
-    const CGAL::Exact_rational scale = CGAL::Exact_rational(1) / CGAL::Exact_rational(double(std::int64_t(1) << S.depth));
-    for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j)
-        if (S.corner[k][j] != 0) r[j] += w[k] * CGAL::Exact_rational(double(S.corner[k][j])) * scale;
-    return r;
-  }
-
   static Exact_point point(const std::array<Exact_point, 3>& corners, const Border_point& p)
   { return Translation_segment(corners[p.edge], corners[(p.edge + 1) % 3]).at(p.l); }
 
@@ -355,15 +423,21 @@ private:
   const Direction* m_directions = nullptr;
   std::uint32_t m_count = 0;
   std::size_t m_cells = 0;
-  bool m_searched = false;                 // were lines of the current cell searched?
   std::optional<Cell_weights> m_found;     // its island point
   std::array<Exact_point, 3> m_T;          // the current cell's corners, over a common denominator
   std::array<Vec3<Interval>, 3> m_e;       // and their enclosures
   std::vector<Cell_pair> m_pairs;          // whose crossing sets' borders may cross the current cell
+  std::unordered_map<std::uint64_t, Plane_pair> m_on_plane; // of the pairs met in the current facet
   std::array<std::optional<Pair>, 4> m_recent_covers; // the last pairs that covered a cell
   std::size_t m_next_recent = 0;
   std::optional<Pair> m_last_cover;        // the last pair that hid a line
-  std::vector<Line_piece> m_lines;         // searched in the current sub-cell
+  struct Leaf
+  {
+    Sub_cell cell;
+    std::vector<std::uint32_t> pairs; // of m_pairs: whose crossing sets' borders may cross it
+  };
+  std::vector<Leaf> m_leaves;              // of the current cell, where an island's edge can be
+  std::vector<Line_piece> m_lines;         // searched in the current cell
   std::vector<Segment_parameter> m_ends;
 };
 

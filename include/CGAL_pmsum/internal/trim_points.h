@@ -358,15 +358,20 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     }
   }
   if (!islands) return;
+  bool started = false;
   for (std::size_t i : cells) {
     const auto& cell = lattice.cells()[i];
     bool has_ends = false;
     for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)];
     if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
+    if (!started) {
+      const std::vector<std::uint32_t> facet = lattice.corners(); // the first three are not collinear
+      islands->start_facet({point(facet[0]), point(facet[1]), point(facet[2])}, directions, fp.number_of_directions);
+      started = true;
+    }
     const std::optional<Cell_weights> w =
       islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])},
-                            {corner(cell[0]).witness, corner(cell[1]).witness, corner(cell[2]).witness}, directions,
-                            fp.number_of_directions);
+                            {corner(cell[0]).witness, corner(cell[1]).witness, corner(cell[2]).witness});
     if (w)
       add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}});
   }
