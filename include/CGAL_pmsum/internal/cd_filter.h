@@ -453,8 +453,9 @@ public:
   /// A slab whose axis is not normal to H bounds a region of H by lines; one whose axis is
   /// normal to H either holds all of H (ignored), or none of it (never), or has H as a
   /// bounding plane: then the perturbation moves every point of H into it (ignored) or out
-  /// of it (never), the same for all. So intervals never leave undecided the pairs whose
-  /// crossing sets have H as a supporting plane (coplanar faces). Exact.
+  /// of it (never), the same for all. So the slab that has H as a supporting plane of the
+  /// crossing set (coplanar faces), which intervals can never decide on H, is decided once.
+  /// Exact.
   struct Plane_crossing
   {
     bool never = false;
@@ -465,6 +466,7 @@ public:
     Plane_crossing r;
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
     const Plane& p = m_plane;
+    std::optional<bool> holds; // does the slab normal to H hold every point of H, perturbed?
     for (int k = 0; k < 11 && !r.never; ++k) {
       {
         CGAL::Protect_FPU_rounding<true> guard;
@@ -473,26 +475,37 @@ public:
       }
       const Vec3<Exact_nt> x = axis<Exact_nt>(u, v, k);
       auto zero = [](const Vec3<Exact_nt>& y) { return CGAL::is_zero(y[0]) && CGAL::is_zero(y[1]) && CGAL::is_zero(y[2]); };
-      if (zero(x) || !zero(cross(x, p.exact_normal))) continue; // no slab, or not normal to H
-      // Compare the extent of B - A along H's normal n with H's position n.X / W.
-      auto range = [&](const Tree_mesh& m, Index t) {
-        const auto& tri = m.mesh->triangles[t];
-        std::pair<Exact_nt, Exact_nt> e;
-        for (int i = 0; i < 3; ++i) {
-          const Exact_nt y = dot(p.exact_normal, to_nt<Exact_nt>(m.base[tri[i]])) * p.exact_point.W;
-          if (i == 0 || y < e.first) e.first = y;
-          if (i == 0 || y > e.second) e.second = y;
-        }
-        return e;
-      };
-      const auto a = range(m_moving, u), b = range(m_static, v);
-      const Exact_nt h = dot(p.exact_normal, p.exact_point.X), lo = b.first - a.second, hi = b.second - a.first;
-      if (lo < h && h < hi) r.ignored |= std::uint16_t(1) << k;
-      else if (lo < hi && ((h == lo && p.side == CGAL::POSITIVE) || (h == hi && p.side == CGAL::NEGATIVE)))
-        r.ignored |= std::uint16_t(1) << k;
+      if (zero(x)) { r.ignored |= std::uint16_t(1) << k; continue; } // no slab (its enclosure may not show it)
+      if (!zero(cross(x, p.exact_normal))) continue;                   // not normal to H
+      // Every axis normal to H gives the same slab: the extent of B - A along H's normal n,
+      // compared with H's position n.X / W once.
+      if (!holds) holds = slab_normal_to_plane_holds(u, v);
+      if (*holds) r.ignored |= std::uint16_t(1) << k;
       else r.never = true;
     }
     return r;
+  }
+
+  /// Does the slab of the pair (u, v) normal to the plane H set by set_plane() hold every
+  /// point of H, perturbed: H strictly inside it, or on its border with the perturbation
+  /// moving H's points into it? Exact.
+  bool slab_normal_to_plane_holds(Index u, Index v) const
+  {
+    const Plane& p = m_plane;
+    auto range = [&](const Tree_mesh& m, Index t) { // of W n.x over the triangle's corners
+      const auto& tri = m.mesh->triangles[t];
+      std::pair<Exact_nt, Exact_nt> e;
+      for (int i = 0; i < 3; ++i) {
+        const Exact_nt y = dot(p.exact_normal, to_nt<Exact_nt>(m.base[tri[i]])) * p.exact_point.W;
+        if (i == 0 || y < e.first) e.first = y;
+        if (i == 0 || y > e.second) e.second = y;
+      }
+      return e;
+    };
+    const auto a = range(m_moving, u), b = range(m_static, v);
+    const Exact_nt h = dot(p.exact_normal, p.exact_point.X), lo = b.first - a.second, hi = b.second - a.first;
+    if (lo < h && h < hi) return true;
+    return lo < hi && ((h == lo && p.side == CGAL::POSITIVE) || (h == hi && p.side == CGAL::NEGATIVE));
   }
 
   /// Can the crossing set B - A of the pair (u, v) meet the plane set by set_plane()?

@@ -19,10 +19,14 @@
 //
 // Only cells that need it are searched: one with a corner inside the sum and no end of a
 // free interval on its edges (else those ends are in T and closer than diam(T) to its
-// islands), that is not certified inside the sum, and that no single item pair covers (one
-// pair crossing at the three corners crosses on all of T: the translations where two
-// triangles cross form a convex set; shown by exact tests of the corners' witnesses, or by
-// intervals, Cd_filter::crossing_slabs(), the pairs that covered the last cells first).
+// islands), that is not certified inside the sum, and that no single item pair covers
+// with a margin (intervals show T inside the pair's open crossing set, a convex set:
+// Cd_filter::crossing_slabs(), the pairs that covered the last cells first). Only skips that
+// hold around T too are used: a free end found on a line at T's border may be free just
+// outside T (the side of the line is perturbed towards, not into, T), so an exact test that
+// a pair crosses on all of T would skip cells whose search finds such a point, and the
+// output would depend on which cells had such a test (the octree filter's certified corners
+// have none).
 //
 // Most such cells are covered by several pairs together and have no island. So T is first
 // halved (max_depth times, into 4 triangles each time), and a sub-cell S is dropped when one
@@ -71,7 +75,8 @@ class Island_search
 public:
   using Pair = std::pair<Index, Index>;
 
-  /// Number of halvings of a cell before the lines of its remaining sub-cells are searched.
+  /// Number of halvings of a cell before the lines that may cross its remaining sub-cells
+  /// are searched.
   static constexpr int max_depth = 4;
 
   Island_search(Cd_filter& filter, Segment_search& search) : m_filter(filter), m_search(search) {}
@@ -92,14 +97,10 @@ public:
   /// A point (weights over T's corners) of an island of cell T (corners exact, not
   /// collinear), exactly on the boundary of the sum, if T has islands: the first end of a
   /// free part found on the lines that can bound one. It is closer than diam(T) to every
-  /// point of every island of T, which is all that coverage needs. None if one of the
-  /// `witnesses` (pairs crossing at some corner) crosses at all three. T lies in the facet
-  /// of start_facet().
-  std::optional<Cell_weights> island_point(const std::array<Exact_point, 3>& T,
-                                           const std::array<std::optional<Pair>, 3>& witnesses)
+  /// point of every island of T, which is all that coverage needs. T lies in the facet of
+  /// start_facet().
+  std::optional<Cell_weights> island_point(const std::array<Exact_point, 3>& T)
   {
-    for (const auto& w : witnesses)
-      if (w && m_filter.pair_crosses_at(w->first, w->second, {&T[0], &T[1], &T[2]}, m_directions, m_count)) return {};
     Sub_cell whole{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, 0, {}};
     for (int k = 0; k < 3; ++k) whole.e[k] = m_e[k] = enclosure(T[k]);
     m_pairs.clear();
@@ -377,7 +378,7 @@ private:
     return false;
   }
 
-  /// Was this piece (the same line, clipped to the same parameters) searched in this sub-cell?
+  /// Was this piece (the same line, clipped to the same parameters) searched in this cell?
   bool is_searched(const Line_piece& piece) const
   {
     auto same = [](const Border_point& x, const Border_point& y) { return x.edge == y.edge && compare(x.l, y.l) == CGAL::ZERO; };

@@ -370,8 +370,7 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
       started = true;
     }
     const std::optional<Cell_weights> w =
-      islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])},
-                            {corner(cell[0]).witness, corner(cell[1]).witness, corner(cell[2]).witness});
+      islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])});
     if (w)
       add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}});
   }
