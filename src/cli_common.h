@@ -237,9 +237,8 @@ const std::string sum_options_help = input_options_help +
   "                         (d/2, d)-net: many times more points, and slower\n"
   "  --no-trim-points       no points on the trim curves of the convolution facets: faster,\n"
   "                         but passages narrower than the sample spacing may be uncovered\n"
-  "  --islands              also search visible pieces inside one lattice cell (e.g. voids\n"
-  "                         smaller than the sample spacing): exact, slower (many times\n"
-  "                         so with many coplanar faces)\n"
+  "  --no-islands           do not search visible pieces inside one lattice cell (e.g. voids\n"
+  "                         smaller than the sample spacing): faster, but those may be uncovered\n"
   "  --levels D1,D2,...     coarse to fine: first the larger covering distances D1 > D2 > ... > D\n"
   "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
   "                         K to OUT with .levelK before the extension (validate: the last)\n"
@@ -247,7 +246,7 @@ const std::string sum_options_help = input_options_help +
   "  --force                run even if the estimated output exceeds the available memory\n";
 const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
 const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter", "--all-candidates",
-                                            "--no-trim-points", "--islands", "--force", "--quiet", "--help", "-h"};
+                                            "--no-trim-points", "--no-islands", "--force", "--quiet", "--help", "-h"};
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
 
@@ -265,7 +264,7 @@ struct Sum_input
   std::string p_path, q_path;
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
-  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, islands = false, force = false, quiet = false;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, islands = true, force = false, quiet = false;
   int threads = 0; // 0: all cores
   std::vector<double> coarser_d; // --levels: coarser covering distances, coarse to fine (absolute)
 };
@@ -286,7 +285,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.octree_filter = !args.flag("--no-octree-filter");
   in.covering_net = !args.flag("--all-candidates");
   in.trim_points = !args.flag("--no-trim-points");
-  in.islands = args.flag("--islands");
+  in.islands = !args.flag("--no-islands");
   in.force = args.flag("--force");
   if (args.has("--threads")) {
     const double t = args.number("--threads");

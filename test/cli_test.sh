@@ -176,6 +176,10 @@ for o in --negate-p --all-candidates --no-cd-filter "--levels 1" "--threads 2"; 
   expect_fail 2 "unknown option ${o% *}" -- pd "$cube" "$tet" -d 0.2 --at 0 0 0 $o
 done
 if "$pmsum" pd --help | grep -q -- "--levels\|--negate-p\|--threads"; then ko "pd --help lists options pd does not take"; else ok; fi
+# the island search is on by default, --no-islands turns it off (the JSON summary says which)
+if "$pmsum" sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --quiet --json "$work/on.json" && grep -q '"islands": true' "$work/on.json" &&
+   "$pmsum" sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --quiet --no-islands --json "$work/off.json" &&
+   grep -q '"islands": false' "$work/off.json"; then ok; else ko "--no-islands"; fi
 expect_fail 3 "candidate points" -- sum "$data/knot1.off" "$data/elephant.off" -d 0.00002 --relative -o "$work/out.ply"
 # a covering distance too small for the sample lattice is a refusal for size (exit 3), --force or not
 expect_fail 3 "refused: d is too small" -- sum "$cube" "$tet" -d 1e-9 -o "$work/out.ply" --force

@@ -49,7 +49,7 @@ struct Outcome
   double worst = 0; // / d
 };
 
-std::vector<Record> sum_records(const Mesh& P, const Mesh& Q, double d, bool negate, bool islands = false)
+std::vector<Record> sum_records(const Mesh& P, const Mesh& Q, double d, bool negate, bool islands = true)
 {
   std::vector<Record> records;
   CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(records),
@@ -243,31 +243,49 @@ TEST_CASE("narrow passages: exact and covered down to a passage of d/1000, turne
   }
 }
 
+namespace {
+
+/// Two unit blocks with a gap w = 1/2 between them, on a floor or not, + a cube turned about z
+/// (cos 0.8, sin 0.6), then tilted about x by `tilt` radians, whose extent along x is
+/// w - delta (d: 4% of about the sum's diagonal): the sum keeps a slot (or a slit) of width
+/// delta. Exact and covered on every shell, by default.
+void check_slot_sum(bool floor, double delta_over_d, bool turn, double tilt)
+{
+  const double w = 0.5;
+  const double d = 0.04 * std::sqrt(2.5 * 2.5 + 1 + 4), delta = delta_over_d * d;
+  Soup part = slot_blocks(w, floor), cube = turned_cube((w - delta) / 1.4, 0.8, 0.6, std::cos(tilt), std::sin(tilt));
+  if (turn) { part = rotated(part); cube = rotated(cube); }
+  const Mesh P = to_mesh<Mesh>(part), Q = to_mesh<Mesh>(cube);
+  const Outcome o = check(sum_records(P, Q, d, false), P, Q, d, Reference_nef(P, Q, false));
+  INFO((floor ? "slot" : "slit") << " of " << delta_over_d << " d" << (turn ? ", rotated" : "") << ", tilt " << tilt
+                                 << ": points " << o.points << ", shells " << o.shells << ", worst coverage " << o.worst
+                                 << " d");
+  CHECK(o.off_boundary == 0);
+  CHECK(o.covered == o.shells);
+  CHECK(o.worst < 1);
+}
+
+} // namespace
+
 TEST_CASE("narrow slots and slits: exact and covered for a gap of d down to d/1000, turned and rotated", "[validation][narrow]")
 {
-  // Two unit blocks with a gap w between them, on a floor or not, + a cube turned about z
-  // (cos 0.8, sin 0.6) whose extent along x is w - delta: the sum keeps a slot of width
-  // delta. Its floor is a visible strip of width delta between two trim curves; without a
+  // The slot's floor is a visible strip of width delta between two trim curves; without a
   // floor it is a slit through the whole part. (The strip lies within delta of the slot's
   // walls, whose points cover it: unlike the tunnel above, this family passes without trim
   // points too; it guards exactness and coverage on thin gaps, turned and rotated.)
-  const double w = 0.5;
-  const double d = 0.04 * std::sqrt(2.5 * 2.5 + 1 + 4); // 4% of about the sum's diagonal
-  for (const bool floor : {true, false}) {
-    for (const double delta : {d, d / 10, d / 100, d / 1000}) {
-      for (const bool turn : {false, true}) {
-        Soup part = slot_blocks(w, floor), cube = turned_cube((w - delta) / 1.4, 0.8, 0.6);
-        if (turn) { part = rotated(part); cube = rotated(cube); }
-        const Mesh P = to_mesh<Mesh>(part), Q = to_mesh<Mesh>(cube);
-        const Outcome o = check(sum_records(P, Q, d, false), P, Q, d, Reference_nef(P, Q, false));
-        INFO((floor ? "slot" : "slit") << " of " << delta / d << " d" << (turn ? ", rotated" : "") << ": points "
-                                       << o.points << ", shells " << o.shells << ", worst coverage " << o.worst << " d");
-        CHECK(o.off_boundary == 0);
-        CHECK(o.covered == o.shells);
-        CHECK(o.worst < 1);
-      }
-    }
-  }
+  for (const bool floor : {true, false})
+    for (const double delta : {1., 0.1, 0.01, 0.001})
+      for (const bool turn : {false, true}) check_slot_sum(floor, delta, turn, 0);
+}
+
+TEST_CASE("slivers: a slot and a slit + a cube tilted by 0.01 and 0.001 rad (nearly parallel faces)", "[validation][narrow]")
+{
+  // The tilted cube's faces are nearly parallel to the blocks' and the floor's: the sum's
+  // facets between them are slivers (about tilt * 0.35 wide), around a gap of d/10 or d/1000.
+  for (const bool floor : {true, false})
+    for (const double delta : {0.1, 0.001})
+      for (const double tilt : {0.01, 0.001}) check_slot_sum(floor, delta, false, tilt);
+  check_slot_sum(true, 0.001, true, 0.01); // and rotated
 }
 
 #include <CGAL_pmsum/Penetration_depth.h>
@@ -425,7 +443,7 @@ void check_in_child(const std::vector<Record>& records, const Mesh& P, const Mes
   if (WIFSIGNALED(status)) r.message = "killed by signal " + std::to_string(WTERMSIG(status));
 }
 
-Differential_result run_case(const Mesh& P, const Mesh& Q, double d, bool negate, bool islands = false)
+Differential_result run_case(const Mesh& P, const Mesh& Q, double d, bool negate, bool islands = true)
 {
   Differential_result r;
   std::vector<Record> records;
@@ -494,7 +512,7 @@ struct Stored_case
   Mesh P, Q;
   double d = 0;
   bool negate = false;
-  bool known_gap = false; // "known issue 12" in case.txt: a coverage gap not closed yet
+  bool islands_needed = false; // "islands needed" in case.txt: uncovered without the island search
 };
 
 /// The cases in test/differential/cases/ (each P.off, Q.off, case.txt), in name order.
@@ -514,7 +532,7 @@ std::vector<Stored_case> stored_cases()
     for (std::string key; in >> key;) {
       if (key == "d") in >> c.d;
       else if (key == "negate") in >> c.negate;
-      else if (key == "known") c.known_gap = true;
+      else if (key == "islands") c.islands_needed = true;
       std::getline(in, key);
     }
     REQUIRE(c.d > 0);
@@ -525,34 +543,20 @@ std::vector<Stored_case> stored_cases()
 
 } // namespace
 
-TEST_CASE("differential regressions: exact, and covered unless a known gap", "[validation][differential]")
+TEST_CASE("differential regressions: exact and covered", "[validation][differential]")
 {
   const auto cases = stored_cases();
   REQUIRE(!cases.empty());
   for (const Stored_case& c : cases) {
     const Differential_result r = run_case(c.P, c.Q, c.d, c.negate);
     INFO(c.name << ": " << r.status << " " << r.message << ", worst coverage " << r.outcome.worst << " d");
-    REQUIRE((r.status == "ok" || r.status == "failed"));
-    CHECK(r.outcome.off_boundary == 0);
-    if (!c.known_gap) CHECK(r.outcome.covered == r.outcome.shells);
-    if (!c.known_gap) continue;
-    // The island search covers the known gaps (not yet the default: issue 12), exactly.
-    const Differential_result islands = run_case(c.P, c.Q, c.d, c.negate, true);
-    INFO("with search_islands: worst coverage " << islands.outcome.worst << " d");
-    REQUIRE(islands.status == "ok");
-    CHECK(islands.outcome.off_boundary == 0);
-    CHECK(islands.outcome.covered == islands.outcome.shells);
-  }
-}
-
-// Fails while the gaps stay open by default (a pass here means issue 12 closed them: drop
-// the "known" lines from their case.txt, and this test).
-TEST_CASE("differential regressions: the known coverage gaps are still open", "[validation][differential][!shouldfail]")
-{
-  for (const Stored_case& c : stored_cases()) {
-    if (!c.known_gap) continue;
-    const Differential_result r = run_case(c.P, c.Q, c.d, c.negate);
-    INFO(c.name << ": worst coverage " << r.outcome.worst << " d");
-    CHECK(r.outcome.covered == r.outcome.shells);
+    CHECK(r.status == "ok"); // exact, and every shell covered
+    if (!c.islands_needed) continue;
+    // The case still tests the island search: without it, exact but a shell not covered.
+    const Differential_result without = run_case(c.P, c.Q, c.d, c.negate, false);
+    INFO("without search_islands: " << without.status << ", worst coverage " << without.outcome.worst << " d");
+    REQUIRE(without.status == "failed");
+    CHECK(without.outcome.off_boundary == 0);
+    CHECK(without.outcome.covered < without.outcome.shells);
   }
 }

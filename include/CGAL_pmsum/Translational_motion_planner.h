@@ -31,9 +31,8 @@
 // general, and none relative to d either. The contact points cover C within d, so every
 // part of the free space's boundary wider than about d has nodes; a passage whose boundary
 // has nodes (the tested peg-in-hole and slot problems, with a gap smaller than d) is found
-// when the k-nearest-neighbour edges along it are free. An island of the contact space's
-// boundary without samples (see the user manual's known limits), or two parts of the boundary farther apart
-// than the k-th neighbour and joined only through open space, can make the roadmap miss a
+// when the k-nearest-neighbour edges along it are free. Two parts of the boundary farther
+// apart than the k-th neighbour and joined only through open space can make the roadmap miss a
 // path: the planner then reports that no path was found, which does not prove that none
 // exists. (The paper's star-shaped decomposition has the same limits.)
 

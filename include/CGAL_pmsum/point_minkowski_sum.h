@@ -96,7 +96,7 @@ struct Prepared_sum
     options.use_octree_filter = choose_parameter(get_parameter(np_p, internal_np::use_octree_filter), true);
     options.use_covering_net = choose_parameter(get_parameter(np_p, internal_np::use_covering_net), true);
     options.use_trim_points = choose_parameter(get_parameter(np_p, internal_np::use_trim_points), true);
-    options.search_islands = choose_parameter(get_parameter(np_p, internal_np::search_islands), false);
+    options.search_islands = choose_parameter(get_parameter(np_p, internal_np::search_islands), true);
     options.max_candidates =
       choose_parameter(get_parameter(np_p, internal_np::maximum_number_of_candidates), std::size_t(-1));
     options.callback =
@@ -159,9 +159,9 @@ struct Prepared_sum
 /// instead (the paper's output, many times larger). The samples of P and Q are
 /// `d/2`-coverings, which leaves room for the boundary's concave creases, where the
 /// paper's Theorem 2 alone would not guarantee `d`; points on the trim curves of the
-/// convolution facets cover the passages of the sum narrower than the sample spacing (user
-/// manual, §4). Exception: a visible piece of a facet strictly inside one lattice cell
-/// (an island, e.g. a tiny void; user manual, "Known limits"); `pmsum validate` measures coverage.
+/// convolution facets cover the passages of the sum narrower than the sample spacing, and
+/// points of the islands (visible pieces of a facet strictly inside one lattice cell, e.g. a
+/// tiny void) cover those (user manual, §4); `pmsum validate` measures coverage.
 ///
 /// Closed components of a mesh are solids; components with borders are surfaces.
 ///
@@ -174,7 +174,7 @@ struct Prepared_sum
 /// \param d covering distance, > 0
 /// \param np_p named parameters for P and for the algorithm: `vertex_point_map`,
 ///        `geom_traits`, `use_normal_filter` (true), `use_cd_filter` (true), `use_octree_filter` (true),
-///        `use_covering_net` (true), `use_trim_points` (true), `search_islands` (false),
+///        `use_covering_net` (true), `use_trim_points` (true), `search_islands` (true),
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,

@@ -122,7 +122,7 @@ struct Decision_context
   bool keep_vertex_sums = false;       // vertex + vertex boundary points are output even if covered
   bool record_decisions = false;       // coarse to fine: fill Pair_decision::tested
   bool trim_points = true;             // search the trim curves of 2-dimensional pairs (trim_points.h)
-  bool islands = false;                // and the islands inside lattice cells (island_search.h)
+  bool islands = true;                 // and the islands inside lattice cells (island_search.h)
   double d = 0;                        // the covering distance
 };
 

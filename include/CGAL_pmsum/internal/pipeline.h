@@ -59,7 +59,7 @@ struct Pipeline_options
   bool use_octree_filter = true; // only with the CD filter
   bool use_covering_net = true;  // only with the CD filter; false: every boundary candidate
   bool use_trim_points = true;   // only with the CD filter: search the trim curves (trim_points.h)
-  bool search_islands = false;   // with trim points: and the islands inside cells (island_search.h)
+  bool search_islands = true;    // with trim points: and the islands inside cells (island_search.h)
   bool keep_vertex_sums = false; // with the net: vertex + vertex boundary points too, covered or not
   std::size_t max_candidates = std::size_t(-1);
   std::function<bool(double)> callback; // progress in [0, 1]; false cancels
