@@ -2,7 +2,8 @@
 // R^3 with the same exact collision checks (benchmark/run_benchmarks.py --only plan runs it).
 //
 //   plan_vs_ompl PROBLEM PLANNER SEED [TIME_LIMIT]
-//     PROBLEM  pocket | slot        (src/planning_scenes.h, clearance 1/16 for a unit cube)
+//     PROBLEM  pocket | slot | slot-narrow   (src/planning_scenes.h, clearance 1/16 for a unit
+//              cube; slot-narrow: clearance 1/200, d/100 of our planner's d = 0.5)
 //     PLANNER  pmsum | rrtconnect | prm
 // Prints one JSON line: solved, seconds (wall clock, single thread; for pmsum the contact
 // space and the roadmap included), path vertices and length, and whether every segment of
@@ -104,14 +105,16 @@ private:
 int main(int argc, char** argv)
 {
   if (argc < 4) {
-    std::cerr << "usage: plan_vs_ompl pocket|slot pmsum|rrtconnect|prm SEED [TIME_LIMIT]\n";
+    std::cerr << "usage: plan_vs_ompl pocket|slot|slot-narrow pmsum|rrtconnect|prm SEED [TIME_LIMIT]\n";
     return 2;
   }
   const std::string problem = argv[1], planner = argv[2];
   const unsigned long seed = std::stoul(argv[3]);
   const double time_limit = argc > 4 ? std::atof(argv[4]) : 10.0;
-  const pmsum_test::Planning_scene scene = problem == "pocket" ? pmsum_test::pocket_scene(1. / 16)
-                                                                : pmsum_test::slot_scene(1. / 16);
+  const double d = 0.5;
+  const pmsum_test::Planning_scene scene = problem == "pocket"        ? pmsum_test::pocket_scene(1. / 16)
+                                           : problem == "slot-narrow" ? pmsum_test::slot_scene(d / 100)
+                                                                      : pmsum_test::slot_scene(1. / 16);
   const Mesh R = pmsum_test::to_mesh<Mesh>(scene.robot), O = pmsum_test::to_mesh<Mesh>(scene.obstacle);
   const K::Point_3 start(scene.start[0], scene.start[1], scene.start[2]), goal(scene.goal[0], scene.goal[1], scene.goal[2]);
   Exact_checker checker(R, O);
@@ -119,7 +122,6 @@ int main(int argc, char** argv)
   bool solved = false;
   std::vector<std::array<double, 3>> path;
   double seconds = 0;
-  const double d = 0.5;
   if (planner == "pmsum") {
     const auto t0 = std::chrono::steady_clock::now();
     auto pl = CGAL::Pmsum::Translational_motion_planner<Mesh, Mesh>::make<CGAL::Sequential_tag>(R, O, d);

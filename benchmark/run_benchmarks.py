@@ -449,13 +449,16 @@ def ensure_ompl_benchmark(run):
     return exe
 
 
+PLAN_PROBLEMS = ["pocket", "slot", "slot-narrow"]
+
+
 def bench_plan(run, seeds=20, time_limit=10.0):
     """Translational motion planning: ours (deterministic: 3 timed runs) against OMPL's
     RRTConnect and PRM (20 seeds, 10 s each), all with the same exact collision checks."""
     import statistics
     exe = ensure_ompl_benchmark(run)
     runs = []
-    for problem in ["pocket", "slot"]:
+    for problem in PLAN_PROBLEMS:
         for planner, n in [("pmsum", 3), ("rrtconnect", seeds), ("prm", seeds)]:
             for seed in range(1, n + 1):
                 out = subprocess.run([exe, problem, planner, str(seed), str(time_limit)], capture_output=True,
@@ -473,7 +476,7 @@ def report_plan(runs, seeds=20, time_limit=10.0):
     import statistics
     rows, labels, rates, times = [], [], [], []
     names = {"pmsum": "CGAL_pmsum (d = 0.5)", "rrtconnect": "OMPL RRTConnect", "prm": "OMPL PRM"}
-    for problem in ["pocket", "slot"]:
+    for problem in PLAN_PROBLEMS:
         for planner in ["pmsum", "rrtconnect", "prm"]:
             rs = [r for r in runs if r["problem"] == problem and r["planner"] == planner]
             ok = [r for r in rs if r["solved"] and r["verified"]]
@@ -491,7 +494,8 @@ def report_plan(runs, seeds=20, time_limit=10.0):
                            "median s (all runs)", "mean path length"], rows,
           "A unit cube robot, clearance 1/16 (src/planning_scenes.h). pocket: the paper's Fig. 12(b) kind, the "
           "robot under a lid must slide sideways 1 + 1/16 with clearance 1/16 in y and z, then rise through a "
-          "chimney with clearance 1/16 in x and y. slot: a closed room split by a wall with a slot 1 + 1/16 wide. "
+          "chimney with clearance 1/16 in x and y. slot: a closed room split by a wall with a slot 1 + 1/16 wide; "
+          "slot-narrow: the same with a slot 1 + 1/200 wide (clearance d/100 for our d = 0.5). "
           f"One thread, wall clock; OMPL: {seeds} seeds, {time_limit:g} s limit per run, bounds = a box around "
           "the pocket scene / the room's inside; state validity = CGAL_pmsum's exact point test, motion "
           "validator = the exact swept-segment test (no discretisation resolution); every returned path was "
@@ -501,7 +505,7 @@ def report_plan(runs, seeds=20, time_limit=10.0):
           f"{os.cpu_count()} cores.")
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
     x = range(len(labels))
-    a1.bar(x, rates, color=["C0", "C1", "C2"] * 2)
+    a1.bar(x, rates, color=["C0", "C1", "C2"] * len(PLAN_PROBLEMS))
     a1.set_xticks(list(x))
     a1.set_xticklabels(labels, fontsize=8)
     a1.set_ylabel("success rate")

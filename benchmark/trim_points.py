@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 # Copyright (c) 2026 CGAL_pmsum contributors.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Trim-curve and island points, side by side: pmsum with --islands, with the default settings
-and with --no-trim-points, on narrow passages and a void smaller than the sample spacing
-(validated against Nef: exactness and coverage) and on bundled models (time and points). Writes
+"""Trim-curve and island points, side by side: pmsum with the default settings (trim points and
+islands), with --no-islands and with --no-trim-points, on narrow passages, a void smaller than
+the sample spacing and the paper's blocks + cube (many coplanar faces), validated against Nef
+(exactness and coverage), and on bundled models (time and points). Writes
 benchmark/results/trim_points.md.
 
 usage: /usr/bin/python3 benchmark/trim_points.py [--pmsum build/pmsum] [--threads 2] [--repeat 3]"""
@@ -73,7 +74,7 @@ def find(j, key):
     return None
 
 
-RUNS = (("--islands", ["--islands"]), ("default", []), ("--no-trim-points", ["--no-trim-points"]))
+RUNS = (("default", []), ("--no-islands", ["--no-islands"]), ("--no-trim-points", ["--no-trim-points"]))
 
 
 def main():
@@ -114,13 +115,19 @@ def main():
             dv = float(fh.readline().split()[1])
         measure("differential case void-seed-248 (a void inside lattice cells)", os.path.join(void, "P.off"),
                 os.path.join(void, "Q.off"), dv, [], True)
+        shapes = {}
+        for name in ("blocks", "cube"):
+            shapes[name] = os.path.join(tmp, name + ".off")
+            subprocess.run([a.pmsum, "generate", name, "-o", shapes[name]], check=True, capture_output=True)
+        measure("paper's blocks + cube (coplanar faces), d = 2%", shapes["blocks"], shapes["cube"], 0.02, ["--relative"],
+                True)
         data = os.path.join(ROOT, "data")
         for p, q in (("knot1.off", "tetrahedron.off"), ("elephant.off", "octahedron.off"), ("star.off", "cross.off")):
             measure("%s + %s, d = 2%%" % (p, q), os.path.join(data, p), os.path.join(data, q), 0.02, ["--relative"],
                     False)
     out = os.path.join(ROOT, "benchmark", "results", "trim_points.md")
     with open(out, "w") as fh:
-        fh.write("# Trim-curve and island points: --islands, default and --no-trim-points (%d threads)\n\n"
+        fh.write("# Trim-curve and island points: default, --no-islands and --no-trim-points (%d threads)\n\n"
                  % a.threads)
         fh.write("Made by `/usr/bin/python3 benchmark/trim_points.py`. Seconds: pmsum's own total (`sum`), the\n"
                  "fastest of %d interleaved runs. The narrow passages and the void are validated against Nef\n"

@@ -11,6 +11,7 @@
 #include "suite_shapes.h"
 #include "planning_scenes.h"
 
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -43,6 +44,16 @@ inline const std::map<std::string, std::function<Soup()>>& shape_presets()
     {"plates", [] { return separated_plates(4, 0.5, 0.25); }},            // + cube-small: difficult void
     {"pocket", [] { return pocket_scene().obstacle; }},     // motion planning, robot: cube
     {"slot-room", [] { return slot_scene().obstacle; }},    // motion planning, robot: cube
+    // narrow passages (issue 12), each 1/2000 wide: a tunnel, a slot, a slit; slivers (a cube
+    // tilted by 0.01 rad, faces nearly parallel to the slot's); the tunnel also rotated
+    {"tunnel", [] { return tunnel_block(); }},
+    {"tunnel-cube", [] { return turned_cube((1 - 1. / 2000) / 1.4, 0.8, 0.6); }},
+    {"tunnel-rotated", [] { return rotated(tunnel_block()); }},
+    {"tunnel-cube-rotated", [] { return rotated(turned_cube((1 - 1. / 2000) / 1.4, 0.8, 0.6)); }},
+    {"slot", [] { return slot_blocks(0.5, true); }},
+    {"slit", [] { return slot_blocks(0.5, false); }},
+    {"slot-cube", [] { return turned_cube((0.5 - 1. / 2000) / 1.4, 0.8, 0.6); }},
+    {"slot-cube-tilted", [] { return turned_cube((0.5 - 1. / 2000) / 1.4, 0.8, 0.6, std::cos(0.01), std::sin(0.01)); }},
   };
   return presets;
 }

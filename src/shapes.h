@@ -189,14 +189,19 @@ inline Soup tunnel_block()
 }
 
 /// A cube of the given side centred at the origin, turned about z by the angle of cosine c
-/// and sine sn (c^2 + sn^2 = 1): its extent along x and y is side (c + sn).
-inline Soup turned_cube(double side, double c, double sn)
+/// and sine sn (c^2 + sn^2 = 1): its extent along x and y is side (c + sn). Then tilted
+/// about x by the angle of cosine tc and sine ts, which keeps its extent along x (a small
+/// tilt: faces nearly parallel to those of an axis-aligned part, slivers in the sum).
+inline Soup turned_cube(double side, double c, double sn, double tc = 1, double ts = 0)
 {
   std::vector<Point> pts;
   const double h = side / 2;
   for (double z : {-h, h})
     for (double a : {-h, h})
-      for (double b : {-h, h}) pts.push_back({c * a - sn * b, sn * a + c * b, z});
+      for (double b : {-h, h}) {
+        const double y = sn * a + c * b;
+        pts.push_back({c * a - sn * b, ts == 0 ? y : tc * y - ts * z, ts == 0 ? z : ts * y + tc * z});
+      }
   return convex_hull(pts);
 }
 

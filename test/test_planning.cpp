@@ -157,16 +157,19 @@ TEST_CASE("robot in a pocket under a lid (paper Fig. 12(b)): taken out", "[plann
   CHECK(st.nodes_rejected == 0); // box coordinates: every contact point is exact in double
 }
 
-TEST_CASE("narrow passage: a slot 1 + 1/16 wide for a unit cube", "[planning]")
+namespace {
+
+/// Plans through the slot scene with clearance `gap` (d = 0.5): the path is free, and where
+/// it crosses the wall's middle plane x = -0.25 (the robot spans [x, x + 1], the wall
+/// [0, 0.5]), the robot is inside the slot.
+void check_slot(double gap)
 {
-  const Planning_scene s = slot_scene(1. / 16);
+  const Planning_scene s = slot_scene(gap);
   const Mesh R = to_mesh<Mesh>(s.robot), O = to_mesh<Mesh>(s.obstacle);
   auto planner = Planner::make(R, O, 0.5);
   const Box_reference ref(s.obstacle);
   const Planner::Result r = planner.plan(p3(s.start), p3(s.goal));
   check_path(r, s, ref);
-  // Where the path crosses the wall's middle plane x = -0.25 (the robot spans [x, x + 1],
-  // the wall [0, 0.5]), the robot is inside the slot.
   bool crossed = false;
   const double h = (1 + s.gap) / 2;
   for (std::size_t i = 0; i + 1 < r.path.size(); ++i) {
@@ -185,6 +188,15 @@ TEST_CASE("narrow passage: a slot 1 + 1/16 wide for a unit cube", "[planning]")
   const Planner::Result out = planner.plan(p3(s.start), P3(5, 5, 5));
   CHECK(!out.found);
   CHECK(out.path.empty());
+}
+
+} // namespace
+
+TEST_CASE("narrow passage: a slot 1 + 1/16 wide for a unit cube", "[planning]") { check_slot(1. / 16); }
+
+TEST_CASE("narrow passage: clearance d/100 (a slot 1 + 1/200 wide for a unit cube, d = 0.5)", "[planning]")
+{
+  check_slot(0.5 / 100);
 }
 
 TEST_CASE("planner errors: start or goal in collision, bad d", "[planning]")

@@ -55,6 +55,12 @@ SUITE = [
     ("eight+icosahedron", "cgal:eight.off", "data:icosahedron.off", 0.01, ["--scale-q", "0.0625"], True),
     ("knot1+tetrahedron", "data:knot1.off", "data:tetrahedron.off", 0.01, ["--scale-q", "0.03125"], True),
     ("elephant+octahedron", "data:elephant.off", "data:octahedron.off", 0.01, ["--scale-q", "0.0078125"], True),
+    # narrow passages 1/2000 wide (issue 12): about d/700 (tunnel) and d/300 (slot, slit, sliver)
+    ("narrow-tunnel", "tunnel", "tunnel-cube", 0.04, [], False),
+    ("narrow-tunnel-rotated", "tunnel-rotated", "tunnel-cube-rotated", 0.04, [], False),
+    ("narrow-slot", "slot", "slot-cube", 0.04, [], False),
+    ("narrow-slit", "slit", "slot-cube", 0.04, [], False),
+    ("narrow-sliver", "slot", "slot-cube-tilted", 0.04, [], False),
 ]
 OPEN = {"open-cube"}
 
