@@ -85,8 +85,8 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 
   /// With trim points, also search the islands of the convolution facets (default `true`):
   /// visible pieces strictly inside one lattice cell, such as a void of the sum smaller than
-  /// the sample spacing (user manual, section 4). `false` is faster (by about a fifth on fine
-  /// meshes) and may leave them uncovered.
+  /// the sample spacing (user manual, section 4). `false` is faster (up to 1.7 times in
+  /// benchmark/results/trim_points.md) and may leave them uncovered.
   Named_parameters<bool, internal_np::search_islands_t, Named_parameters>
   search_islands(bool b) const { return {b, *this}; }
 
