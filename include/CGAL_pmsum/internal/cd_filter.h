@@ -416,7 +416,8 @@ public:
   /// Starts a plane H of translations, that of the triangle T (exact corners, not
   /// collinear), whose points are perturbed as by set_point(x, directions, count, prefix)
   /// with prefix directions parallel to H: may_meet_plane() and on_plane() then tell about
-  /// pairs, each triangle's extent along H's normal computed once per plane.
+  /// pairs, each triangle's extent along H's normal computed once per plane. It replaces the
+  /// current query's directions (set_point() sets them again).
   void set_plane(const std::array<Exact_point, 3>& T, const Direction* directions, std::uint32_t count)
   {
     Plane& p = m_plane;
