@@ -18,7 +18,7 @@
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
-using PD = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>;
+using PD = CGAL::Penetration_depth<Mesh, Mesh>;
 
 namespace {
 struct Setup

@@ -15,7 +15,7 @@
 #include <iostream>
 #include <sstream>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 using Mesh = CGAL::Surface_mesh<IK::Point_3>;
 
 namespace {
@@ -59,7 +59,7 @@ int main(int argc, char** argv)
     const double diag = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) + std::pow(box.ymax() - box.ymin(), 2) +
                                   std::pow(box.zmax() - box.zmin(), 2));
     const double d = 0.005 * diag;
-    auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
+    auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
 
     CGAL::Random rng(seed);
     std::vector<IK::Point_3> ts;

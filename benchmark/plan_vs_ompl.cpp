@@ -2,7 +2,7 @@
 // R^3 with the same exact collision checks (benchmark/run_benchmarks.py --only plan runs it).
 //
 //   plan_vs_ompl PROBLEM PLANNER SEED [TIME_LIMIT]
-//     PROBLEM  pocket | slot | slot-narrow   (src/planning_scenes.h, clearance 1/16 for a unit
+//     PROBLEM  pocket | slot | slot-narrow   (src/shapes/planning_scenes.h, clearance 1/16 for a unit
 //              cube; slot-narrow: clearance 1/200, d/100 of our planner's d = 0.5)
 //     PLANNER  pmsum | rrtconnect | prm
 // Prints one JSON line: solved, seconds (wall clock, single thread; for pmsum the contact
@@ -15,7 +15,7 @@
 // same that checks our edges), so both planners return paths that are free for every point,
 // and neither uses a discretisation resolution.
 
-#include "../src/planning_scenes.h"
+#include "planning_scenes.h"
 
 #include <CGAL_pmsum/Translational_motion_planner.h>
 
@@ -112,10 +112,10 @@ int main(int argc, char** argv)
   const unsigned long seed = std::stoul(argv[3]);
   const double time_limit = argc > 4 ? std::atof(argv[4]) : 10.0;
   const double d = 0.5;
-  const pmsum_test::Planning_scene scene = problem == "pocket"        ? pmsum_test::pocket_scene(1. / 16)
-                                           : problem == "slot-narrow" ? pmsum_test::slot_scene(d / 100)
-                                                                      : pmsum_test::slot_scene(1. / 16);
-  const Mesh R = pmsum_test::to_mesh<Mesh>(scene.robot), O = pmsum_test::to_mesh<Mesh>(scene.obstacle);
+  const pmsum_shapes::Planning_scene scene = problem == "pocket"        ? pmsum_shapes::pocket_scene(1. / 16)
+                                           : problem == "slot-narrow" ? pmsum_shapes::slot_scene(d / 100)
+                                                                      : pmsum_shapes::slot_scene(1. / 16);
+  const Mesh R = pmsum_shapes::to_mesh<Mesh>(scene.robot), O = pmsum_shapes::to_mesh<Mesh>(scene.obstacle);
   const K::Point_3 start(scene.start[0], scene.start[1], scene.start[2]), goal(scene.goal[0], scene.goal[1], scene.goal[2]);
   Exact_checker checker(R, O);
 
@@ -124,7 +124,7 @@ int main(int argc, char** argv)
   double seconds = 0;
   if (planner == "pmsum") {
     const auto t0 = std::chrono::steady_clock::now();
-    auto pl = CGAL::Pmsum::Translational_motion_planner<Mesh, Mesh>::make<CGAL::Sequential_tag>(R, O, d);
+    auto pl = CGAL::Translational_motion_planner<Mesh, Mesh>::make<CGAL::Sequential_tag>(R, O, d);
     const auto r = pl.plan(start, goal);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     solved = r.found;

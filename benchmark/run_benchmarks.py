@@ -492,7 +492,7 @@ def report_plan(runs, seeds=20, time_limit=10.0):
             times.append(t_all)
     write("plan_vs_ompl", ["problem", "planner", "solved", "mean s (solved)", "median s (solved)",
                            "median s (all runs)", "mean path length"], rows,
-          "A unit cube robot, clearance 1/16 (src/planning_scenes.h). pocket: the paper's Fig. 12(b) kind, the "
+          "A unit cube robot, clearance 1/16 (src/shapes/planning_scenes.h). pocket: the paper's Fig. 12(b) kind, the "
           "robot under a lid must slide sideways 1 + 1/16 with clearance 1/16 in y and z, then rise through a "
           "chimney with clearance 1/16 in x and y. slot: a closed room split by a wall with a slot 1 + 1/16 wide; "
           "slot-narrow: the same with a slot 1 + 1/200 wide (clearance d/100 for our d = 0.5). "

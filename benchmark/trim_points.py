@@ -36,12 +36,12 @@ def box(lo, hi):
             (x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)], QUADS
 
 
-def tunnel_block():  # as tunnel_block() in src/shapes.h
+def tunnel_block():  # as tunnel_block() in src/shapes/shapes.h
     return [box((0, 0, 0), (1.5, 4, 4)), box((2.5, 0, 0), (4, 4, 4)),
             box((1.5, 0, 0), (2.5, 1.5, 4)), box((1.5, 2.5, 0), (2.5, 4, 4))]
 
 
-def turned_cube(side, c, s):  # as turned_cube() in src/shapes.h
+def turned_cube(side, c, s):  # as turned_cube() in src/shapes/shapes.h
     h = side / 2
     v = [(c * a - s * b, s * a + c * b, z) for z in (-h, h) for (a, b) in ((-h, -h), (h, -h), (h, h), (-h, h))]
     return [(v, QUADS)]

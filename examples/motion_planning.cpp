@@ -9,7 +9,7 @@
 
 #include <CGAL_pmsum/Translational_motion_planner.h>
 
-#include "../src/planning_scenes.h"
+#include "planning_scenes.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -30,16 +30,16 @@ int main(int argc, char** argv)
     start = K::Point_3(std::atof(argv[4]), std::atof(argv[5]), std::atof(argv[6]));
     goal = K::Point_3(std::atof(argv[7]), std::atof(argv[8]), std::atof(argv[9]));
   } else {
-    const pmsum_test::Planning_scene s = pmsum_test::pocket_scene(1. / 16);
-    robot = pmsum_test::to_mesh<Mesh>(s.robot);
-    obstacle = pmsum_test::to_mesh<Mesh>(s.obstacle);
+    const pmsum_shapes::Planning_scene s = pmsum_shapes::pocket_scene(1. / 16);
+    robot = pmsum_shapes::to_mesh<Mesh>(s.robot);
+    obstacle = pmsum_shapes::to_mesh<Mesh>(s.obstacle);
     start = K::Point_3(s.start[0], s.start[1], s.start[2]);
     goal = K::Point_3(s.goal[0], s.goal[1], s.goal[2]);
   }
 
   // Built once: the contact space (points exactly on the boundary of -robot + obstacle,
   // covering it within d) and a roadmap over it.
-  auto planner = CGAL::Pmsum::Translational_motion_planner<Mesh, Mesh>::make(robot, obstacle, d);
+  auto planner = CGAL::Translational_motion_planner<Mesh, Mesh>::make(robot, obstacle, d);
   // Each query: a polyline of translations whose every segment is free (exact test).
   const auto result = planner.plan(start, goal);
   const auto& st = planner.statistics();

@@ -23,10 +23,10 @@ int main(int argc, char** argv)
   const double r = (argc > 2 ? std::atof(argv[2]) : 0.02) * diag, d = (argc > 3 ? std::atof(argv[3]) : 0.01) * diag;
 
   Mesh ball;
-  const double inner = CGAL::Pmsum::make_icosphere(r, 0.02, ball); // polygonal ball, 2% error
+  const double inner = CGAL::make_icosphere(r, 0.02, ball); // polygonal ball, 2% error
   std::vector<K::Point_3> offset, erosion;
-  CGAL::Pmsum::point_offset(P, ball, d, std::back_inserter(offset));
-  CGAL::Pmsum::point_erosion(P, ball, d, std::back_inserter(erosion));
+  CGAL::point_offset(P, ball, d, std::back_inserter(offset));
+  CGAL::point_erosion(P, ball, d, std::back_inserter(erosion));
   std::cout << "offset:  " << offset.size() << " points at distance in [" << inner << ", " << r << "] outside\n"
             << "erosion: " << erosion.size() << " points at distance in [" << inner << ", " << r << "] inside\n";
   return 0;

@@ -23,7 +23,7 @@ int main(int argc, char** argv)
   const double d = argc > 3 ? std::atof(argv[3]) : 0.01;
 
   // Built once: points covering the contact space, and a kd-tree.
-  auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
+  auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
   std::cerr << pd.number_of_contact_points() << " contact points; enter translations x y z\n";
   double x, y, z;
   while (std::cin >> x >> y >> z) {

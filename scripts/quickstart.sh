@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Quick start on a fresh Debian 12 machine.
-#   scripts/quickstart.sh        install what is missing, build (Release), run pmsum on bundled data
+#   scripts/quickstart.sh        install what is missing, build the tool (Release), run it on bundled data
 #   scripts/quickstart.sh test   same set-up, then run every test; then build the sanitized
 #                                subset and the readers' fuzzer with clang (build-san/) and run them
 set -euo pipefail
@@ -8,8 +8,9 @@ cd "$(dirname "$0")/.."
 mode=${1:-demo}
 
 packages=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libtbb-dev catch2 python3)
-# clang, and its runtime libraries with AddressSanitizer, UBSan and libFuzzer
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev)
+# test: clang and its runtime libraries with AddressSanitizer, UBSan and libFuzzer; pybind11,
+# numpy and pytest for the Python module's tests; Doxygen for the reference manual's check
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest doxygen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -26,7 +27,11 @@ jobs=$(nproc 2>/dev/null || echo 2)
 phase() { echo "quickstart: $1: $(( SECONDS - phase_start )) s"; phase_start=$SECONDS; }
 phase_start=$SECONDS
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build build -j "$jobs"
+if [ "$mode" = demo ]; then
+  cmake --build build -j "$jobs" --target pmsum_cli   # the demo runs the tool only
+else
+  cmake --build build -j "$jobs"
+fi
 phase "Release build"
 
 case "$mode" in

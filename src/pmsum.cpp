@@ -166,17 +166,17 @@ int command_offset(int argc, char** argv)
   Mesh B;
   double inner = r;
   if (args.flag("--cube")) {
-    pmsum_test::Soup c = pmsum_test::box({-r, -r, -r}, {r, r, r});
-    B = pmsum_test::to_mesh<Mesh>(c);
+    pmsum_shapes::Soup c = pmsum_shapes::box({-r, -r, -r}, {r, r, r});
+    B = pmsum_shapes::to_mesh<Mesh>(c);
   } else {
-    inner = CGAL::Pmsum::make_icosphere(r, error, B);
+    inner = CGAL::make_icosphere(r, error, B);
   }
   std::vector<Oriented_point> points;
   CGAL::Pmsum::Statistics stats;
   if (args.flag("--erode")) {
     if (!CGAL::is_closed(P)) throw Error("--erode needs a closed mesh");
     std::vector<K::Point_3> pts;
-    CGAL::Pmsum::point_erosion<CGAL::Sequential_tag>(P, B, d, std::back_inserter(pts));
+    CGAL::point_erosion<CGAL::Sequential_tag>(P, B, d, std::back_inserter(pts));
     for (const auto& p : pts) points.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
   } else {
     Sum_input in;
@@ -241,7 +241,7 @@ int command_pd(int argc, char** argv)
   Output_files files(outputs, args.positional);
   const Sum_input in = read_sum_input(args);
   const auto t_build = std::chrono::steady_clock::now();
-  auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(in.P, in.Q, in.d);
+  auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(in.P, in.Q, in.d);
   const double build_seconds = seconds_since(t_build);
   const auto t_query = std::chrono::steady_clock::now();
   std::cout << std::setprecision(10);
@@ -312,7 +312,7 @@ int command_sweep(int argc, char** argv)
   CGAL::Pmsum::Statistics stats;
   const int threads = args.has("--threads") ? int(args.number("--threads")) : 0;
   with_threads(threads, [&](auto tag) {
-    CGAL::Pmsum::point_sweep<decltype(tag)>(P, path, d, std::back_inserter(pts), &stats);
+    CGAL::point_sweep<decltype(tag)>(P, path, d, std::back_inserter(pts), CGAL::parameters::statistics(stats));
   });
   std::vector<Oriented_point> out;
   for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
@@ -401,9 +401,9 @@ int command_plan(int argc, char** argv)
   const Mesh R = read_mesh(args.positional[0], "ROBOT", quiet);
   const Mesh O = read_mesh(args.positional[1], "OBSTACLE", quiet);
   if (args.flag("--relative")) d *= sum_diagonal(PMP::bbox(R), PMP::bbox(O));
-  using Planner = CGAL::Pmsum::Translational_motion_planner<Mesh, Mesh>;
+  using Planner = CGAL::Translational_motion_planner<Mesh, Mesh>;
   std::optional<Planner> planner;
-  with_threads(threads, [&](auto tag) { planner.emplace(Planner::make<decltype(tag)>(R, O, d, k)); });
+  with_threads(threads, [&](auto tag) { planner.emplace(Planner::make<decltype(tag)>(R, O, d, CGAL::parameters::roadmap_neighbors(k))); });
   const auto& s = starts.front();
   const auto& g = goals.front();
   const Planner::Result r = planner->plan(K::Point_3(s[0], s[1], s[2]), K::Point_3(g[0], g[1], g[2]));
@@ -440,20 +440,20 @@ int command_generate(int argc, char** argv)
   const Arguments args(argc, argv, 2, {"-o"}, {"--help", "-h", "--list"});
   if (args.flag("--help") || args.flag("-h") || args.flag("--list")) {
     std::cout << "usage: pmsum generate NAME -o OUT.off\n\nshapes:";
-    for (const auto& kv : pmsum_test::shape_presets()) std::cout << ' ' << kv.first;
+    for (const auto& kv : pmsum_shapes::shape_presets()) std::cout << ' ' << kv.first;
     std::cout << "\n";
     return 0;
   }
   if (args.positional.size() != 1) throw Usage_error("generate needs one shape name");
   if (!args.has("-o")) throw Usage_error("generate needs -o OUT.off");
   Output_files files({{"-o", args.values.at("-o")}}, {});
-  pmsum_test::Soup s;
+  pmsum_shapes::Soup s;
   try {
-    s = pmsum_test::shape_preset(args.positional[0]);
+    s = pmsum_shapes::shape_preset(args.positional[0]);
   } catch (const std::invalid_argument& e) {
     throw Usage_error(e.what());
   }
-  files["-o"].write([&](std::ostream& os) { pmsum_test::write_off(s, os); });
+  files["-o"].write([&](std::ostream& os) { pmsum_shapes::write_off(s, os); });
   return 0;
 }
 

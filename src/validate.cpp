@@ -29,8 +29,9 @@ const std::string validate_help = std::string(
   "  --save-exact FILE.nef3 save the exact boundary (CGAL's exact Nef format)\n"
   "  --save-exact-off FILE.off  save it as a triangle soup (rounded to double)\n"
   "  --points OUT           write our points (.ply or .xyz)\n"
-  "  --shell-points OUT.xyz write our points with the index of the nearest exact shell\n"
-  "                         in a 7th column (to colour pictures by shell)\n"
+  "  --shell-points OUT.xyz write our points as x y z nx ny nz (unit outward normal) and\n"
+  "                         the index of the nearest exact shell in a 7th column (to\n"
+  "                         colour pictures by shell; readers of .xyz take the first six)\n"
   "  --json FILE            write the report\n") + sum_options_help;
 } // namespace
 
@@ -119,14 +120,16 @@ int command_validate(int argc, char** argv)
     }
     files["--shell-points"].write([&](std::ostream& f) {
       f << std::setprecision(9);
-      for (const auto& p : points) {
+      for (const Record& r : records) {
+        const K::Point_3& p = r.point;
         std::size_t best = 0;
         double best_d = HUGE_VAL;
         for (std::size_t i = 0; i < trees.size(); ++i) {
           Search s(*trees[i], p, 1);
           if (s.begin() != s.end() && s.begin()->second < best_d) { best_d = s.begin()->second; best = i; }
         }
-        f << p.x() << ' ' << p.y() << ' ' << p.z() << " 0 0 0 " << best << '\n';
+        f << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << r.normal.x() << ' ' << r.normal.y() << ' '
+          << r.normal.z() << ' ' << best << '\n';
       }
     });
   }

@@ -116,9 +116,13 @@ then ok; else ko "solids sharing an edge's vertices"; cat "$work/shared.txt"; fi
 
 # --- other commands ----------------------------------------------------------------------
 "$pmsum" generate plates -o "$work/plates.off" && "$pmsum" generate cube-small -o "$work/small.off" && ok || ko "generate"
-"$pmsum" validate "$work/plates.off" "$work/small.off" -d 0.05 --relative --quiet --json "$work/v.json" > "$work/v.txt"
+"$pmsum" validate "$work/plates.off" "$work/small.off" -d 0.05 --relative --quiet --json "$work/v.json" \
+  --shell-points "$work/shells.xyz" > "$work/v.txt"
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/v.txt" && grep -q '"void_shells": 1' "$work/v.json" \
    && grep -q '"exactness_failures": 0' "$work/v.json"; then ok; else ko "validate (difficult void)"; cat "$work/v.txt"; fi
+# --shell-points: x y z, a unit normal, and the shell (0 or 1: the outer shell and the void)
+if awk 'NF != 7 || $7 !~ /^[01]$/ { bad = 1 } { n = $4 * $4 + $5 * $5 + $6 * $6; if (n < 0.999999 || n > 1.000001) bad = 1;
+        seen[$7] = 1 } END { exit bad || length(seen) != 2 }' "$work/shells.xyz"; then ok; else ko "validate --shell-points"; fi
 "$pmsum" offset "$cube" -r 0.1 -d 0.05 -o "$work/off.xyz" --json "$work/off.json" --quiet && grep -q '"ball_inradius"' "$work/off.json" && ok || ko "offset"
 # every offset point is within [inradius, r] of the unit cube
 inner=$(grep '"ball_inradius"' "$work/off.json" | tr -dc '0-9.e-')

@@ -29,7 +29,7 @@
 #include <fstream>
 #include <string>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 struct Differential_case
 {
@@ -214,6 +214,6 @@ inline void write_off(const Soup& s, const std::string& path)
   for (const auto& t : s.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_TEST_DIFFERENTIAL_H

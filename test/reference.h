@@ -9,7 +9,7 @@
 #ifndef CGAL_PMSUM_TEST_REFERENCE_H
 #define CGAL_PMSUM_TEST_REFERENCE_H
 
-#include "../src/shapes.h"
+#include "shapes.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -216,6 +216,6 @@ inline double coverage_distance(const std::vector<IK::Point_3>& samples, const s
   return worst;
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_TEST_REFERENCE_H

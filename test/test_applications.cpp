@@ -5,9 +5,13 @@
 
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
+#include <functional>
+
 #include <catch2/catch.hpp>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 
 namespace {
 /// Distance from x to the surface of the box [lo, hi].
@@ -27,7 +31,7 @@ TEST_CASE("icosphere: vertices on the sphere, inradius within the error", "[appl
 {
   for (double e : {0.2, 0.02, 0.005}) {
     Mesh s;
-    const double inner = CGAL::Pmsum::make_icosphere(0.5, e, s);
+    const double inner = CGAL::make_icosphere(0.5, e, s);
     CHECK(inner >= (1 - e) * 0.5);
     CHECK(inner < 0.5);
     CHECK(CGAL::is_closed(s));
@@ -40,10 +44,10 @@ TEST_CASE("offset of a box by a ball: distance r, exact, covered", "[application
 {
   const double r = 0.25, d = 0.1;
   Mesh ball;
-  const double inner = CGAL::Pmsum::make_icosphere(r, 0.02, ball);
+  const double inner = CGAL::make_icosphere(r, 0.02, ball);
   const Mesh cube = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
   std::vector<Record> recs;
-  CGAL::Pmsum::point_offset(cube, ball, d, std::back_inserter(recs));
+  CGAL::point_offset(cube, ball, d, std::back_inserter(recs));
   REQUIRE(recs.size() > 1000);
   // every point at distance in [inner, r] from the box (the ball's polygonal error)
   for (const auto& rec : recs) {
@@ -84,7 +88,7 @@ TEST_CASE("offset by a cube is exact", "[applications][offset]")
 {
   const Mesh cube = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1})), c = to_mesh<Mesh>(box({-0.2, -0.2, -0.2}, {0.2, 0.2, 0.2}));
   std::vector<IK::Point_3> pts;
-  CGAL::Pmsum::point_offset(cube, c, 0.1, std::back_inserter(pts));
+  CGAL::point_offset(cube, c, 0.1, std::back_inserter(pts));
   REQUIRE(!pts.empty());
   for (const auto& p : pts) {
     double m = 0;
@@ -98,10 +102,10 @@ TEST_CASE("erosion of a box by a ball: exact box, covered", "[applications][eros
   using EMesh = CGAL::Surface_mesh<EK::Point_3>;
   const double r = 0.2, d = 0.08;
   EMesh ball;
-  CGAL::Pmsum::make_icosphere(r, 0.02, ball);
+  CGAL::make_icosphere(r, 0.02, ball);
   const EMesh cube = to_mesh<EMesh>(box({0, 0, 0}, {1, 1, 1}));
   std::vector<EK::Point_3> pts;
-  CGAL::Pmsum::point_erosion(cube, ball, d, std::back_inserter(pts));
+  CGAL::point_erosion(cube, ball, d, std::back_inserter(pts));
   REQUIRE(pts.size() > 100);
   // {x : B + x inside [0,1]^3} = prod [-min_c B, 1 - max_c B], exactly
   EK::FT lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -145,9 +149,9 @@ TEST_CASE("erosion needs a closed mesh", "[applications][erosion]")
 {
   const Mesh open = to_mesh<Mesh>(open_box({0, 0, 0}, {1, 1, 1}));
   Mesh ball;
-  CGAL::Pmsum::make_icosphere(0.1, 0.05, ball);
+  CGAL::make_icosphere(0.1, 0.05, ball);
   std::vector<IK::Point_3> pts;
-  CHECK_THROWS_AS(CGAL::Pmsum::point_erosion(open, ball, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
+  CHECK_THROWS_AS(CGAL::point_erosion(open, ball, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
 }
 
 #include <CGAL_pmsum/Penetration_depth.h>
@@ -163,7 +167,7 @@ TEST_CASE("penetration depth of convex pairs: within d of the exact depth", "[ap
     const Soup ps = random_convex(10, seed), qs = transformed(random_convex(12, seed + 50), 0.8);
     const Mesh P = to_mesh<Mesh>(ps), Q = to_mesh<Mesh>(qs);
     const double d = 0.05;
-    auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
+    auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
     REQUIRE(pd.number_of_contact_points() > 1000);
     // exact contact space: hull of q - p; PD(t) = min over its facets of the distance to the plane
     const Reference reference(ps, qs, /*negate_p=*/true);
@@ -245,7 +249,7 @@ TEST_CASE("nearest-point tree: the same nearest distance as brute force", "[appl
 TEST_CASE("penetration depth: nearest_contact is the nearest contact point", "[applications][pd]")
 {
   const Soup ps = random_convex(10, 21), qs = transformed(random_convex(12, 71), 0.8);
-  auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(to_mesh<Mesh>(ps), to_mesh<Mesh>(qs), 0.05);
+  auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(to_mesh<Mesh>(ps), to_mesh<Mesh>(qs), 0.05);
   std::vector<double> xyz;
   for (const auto& p : pd.contact_points()) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
   CGAL::Random rng(5);
@@ -289,7 +293,7 @@ TEST_CASE("sweep of a cube along a segment is the exact convex box sweep", "[app
   const std::vector<EK::Point_3> path = {EK::Point_3(0, 0, 0), EK::Point_3(2, 1, 0.5)};
   const double d = 0.1;
   std::vector<EK::Point_3> pts;
-  CGAL::Pmsum::point_sweep(P, path, d, std::back_inserter(pts));
+  CGAL::point_sweep(P, path, d, std::back_inserter(pts));
   REQUIRE(pts.size() > 500);
   Soup seg;
   seg.convex_pieces.push_back({{0, 0, 0}, {2, 1, 0.5}});
@@ -309,7 +313,7 @@ TEST_CASE("sweep along an L-shaped polyline", "[applications][sweep]")
   const std::vector<IK::Point_3> path = {IK::Point_3(0, 0, 0), IK::Point_3(2, 0, 0), IK::Point_3(2, 2, 0)};
   const double d = 0.1;
   std::vector<IK::Point_3> pts;
-  CGAL::Pmsum::point_sweep(P, path, d, std::back_inserter(pts));
+  CGAL::point_sweep(P, path, d, std::back_inserter(pts));
   Soup legs;
   legs.convex_pieces.push_back({{0, 0, 0}, {2, 0, 0}});
   legs.convex_pieces.push_back({{2, 0, 0}, {2, 2, 0}});
@@ -331,7 +335,99 @@ TEST_CASE("sweep rejects a bad path", "[applications][sweep]")
   std::vector<IK::Point_3> pts;
   const std::vector<IK::Point_3> one = {IK::Point_3(0, 0, 0)};
   const std::vector<IK::Point_3> repeated = {IK::Point_3(0, 0, 0), IK::Point_3(0, 0, 0), IK::Point_3(1, 0, 0)};
-  CHECK_THROWS_AS(CGAL::Pmsum::point_sweep(P, one, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
-  CHECK_THROWS_AS(CGAL::Pmsum::point_sweep(P, repeated, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
+  CHECK_THROWS_AS(CGAL::point_sweep(P, one, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
+  CHECK_THROWS_AS(CGAL::point_sweep(P, repeated, 0.1, std::back_inserter(pts)), CGAL::Pmsum::Invalid_input);
   CHECK(pts.empty());
+}
+
+// One API style: every entry point takes named parameters, ours and CGAL's in any order
+// once the chain starts with one of ours, and fills the statistics it is given.
+TEST_CASE("named parameters: any order, every entry point, statistics and vertex point maps", "[applications][api]")
+{
+  const Soup cube = box({0, 0, 0}, {1, 1, 1});
+  const Mesh P = to_mesh<Mesh>(cube), Q = to_mesh<Mesh>(box({0, 0, 0}, {0.5, 0.25, 0.5}));
+  const double d = 0.2;
+  int calls = 0;
+  const std::function<bool(double)> progress = [&calls](double) { ++calls; return true; };
+  CGAL::Pmsum::Statistics s1, s2;
+  std::vector<IK::Point_3> a, b;
+  CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(a),
+                            CGAL::parameters::statistics(s1).callback(progress).use_octree_filter(true));
+  CGAL::point_minkowski_sum(P, Q, d, std::back_inserter(b),
+                            CGAL::parameters::use_octree_filter(true)
+                              .callback(progress)
+                              .vertex_point_map(get(CGAL::vertex_point, P))
+                              .statistics(s2));
+  CHECK(a == b);
+  CHECK(s1.output_points == a.size());
+  CHECK(s2.output_points == b.size());
+  CHECK(calls > 0);
+
+  // A vertex point map that moves P by (1, 2, 3) moves the sum: the box [1, 2.5] x [2, 3.25] x [3, 4.5].
+  const IK::Vector_3 shift(1, 2, 3);
+  auto moved = [&](Mesh::Vertex_index v) { return P.point(v) + shift; };
+  const auto vpm = boost::make_function_property_map<Mesh::Vertex_index, IK::Point_3>(moved);
+  std::vector<IK::Point_3> c;
+  CGAL::point_offset(P, Q, d, std::back_inserter(c), CGAL::parameters::vertex_point_map(vpm));
+  CHECK(c.size() > 0);
+  const double lo[3] = {1, 2, 3}, hi[3] = {2.5, 3.25, 4.5};
+  std::size_t off = 0;
+  for (const auto& x : c) {
+    bool inside = true, on_face = false;
+    for (int k = 0; k < 3; ++k) {
+      inside = inside && x[k] >= lo[k] - 1e-12 && x[k] <= hi[k] + 1e-12;
+      on_face = on_face || std::abs(x[k] - lo[k]) < 1e-12 || std::abs(x[k] - hi[k]) < 1e-12;
+    }
+    off += !(inside && on_face);
+  }
+  CHECK(off == 0);
+
+  // The sweep, the penetration depth and the planner fill the core's statistics too.
+  CGAL::Pmsum::Statistics s3, s4, s5;
+  std::vector<IK::Point_3> swept;
+  const std::vector<IK::Point_3> path = {IK::Point_3(0, 0, 0), IK::Point_3(1, 0, 0)};
+  CGAL::point_sweep(P, path, d, std::back_inserter(swept), CGAL::parameters::statistics(s3));
+  CHECK(s3.output_points == swept.size());
+  CHECK(swept.size() > 0);
+  auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(P, Q, d, CGAL::parameters::statistics(s4).vertex_point_map(vpm));
+  CHECK(s4.output_points == pd.number_of_contact_points());
+  // moved by (1, 2, 3), the robot P overlaps Q at t = -(1, 2, 3) + (0.1, 0.1, 0.1), and not at t = 0
+  CHECK(pd.overlaps(IK::Point_3(-0.9, -1.9, -2.9)));
+  CHECK_FALSE(pd.overlaps(IK::Point_3(0, 0, 0)));
+}
+
+#include <CGAL_pmsum/point_set_3.h>
+
+#include <CGAL/Point_set_3/IO.h>
+
+#include <sstream>
+
+TEST_CASE("records into a Point_set_3: points, normals, provenance, PLY", "[applications][api]")
+{
+  const Mesh P = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1})), Q = to_mesh<Mesh>(box({0, 0, 0}, {0.5, 0.5, 0.5}));
+  std::vector<CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, IK>> recs;
+  CGAL::point_minkowski_sum(P, Q, 0.2, std::back_inserter(recs));
+  REQUIRE(recs.size() > 0);
+  CGAL::Point_set_3<IK::Point_3> ps;
+  const auto maps = CGAL::Pmsum::insert_into_point_set(recs, ps);
+  REQUIRE(ps.size() == recs.size());
+  REQUIRE(ps.has_normal_map());
+  std::size_t i = 0;
+  for (auto it = ps.begin(); it != ps.end(); ++it, ++i) {
+    CHECK(ps.point(*it) == recs[i].point);
+    CHECK(ps.normal(*it) == recs[i].normal);
+    CHECK(get(maps.origin_p, *it).dimension == recs[i].origin_p.dimension);
+    CHECK(get(maps.origin_q, *it).face == recs[i].origin_q.face);
+    CHECK(get(maps.origin_q_dimension, *it) == recs[i].origin_q.dimension);
+  }
+  // the dimensions travel through PLY
+  std::stringstream ply;
+  REQUIRE(CGAL::IO::write_PLY(ply, ps, CGAL::parameters::stream_precision(17)));
+  CGAL::Point_set_3<IK::Point_3> back;
+  REQUIRE(CGAL::IO::read_PLY(ply, back));
+  REQUIRE(back.size() == ps.size());
+  auto dim = back.property_map<int>("origin_p_dimension");
+  REQUIRE(dim.second);
+  i = 0;
+  for (auto it = back.begin(); it != back.end(); ++it, ++i) CHECK(get(dim.first, *it) == recs[i].origin_p.dimension);
 }

@@ -8,7 +8,7 @@
 
 #include <set>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 
 namespace {
 

@@ -15,7 +15,7 @@
 
 #include <limits>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 using Catch::Matchers::Contains;
 
 namespace {

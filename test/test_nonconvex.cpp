@@ -7,7 +7,7 @@
 #include <set>
 #include <tuple>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 
 namespace {
 

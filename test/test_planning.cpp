@@ -1,7 +1,7 @@
 // Translational motion planning: the exact segment test against the exact answer for box
 // scenes, and planned paths checked segment by segment by an independent exact test.
 #include "test_support.h"
-#include "../src/planning_scenes.h"
+#include "planning_scenes.h"
 
 #include <CGAL_pmsum/Translational_motion_planner.h>
 
@@ -10,10 +10,10 @@
 
 #include <catch2/catch.hpp>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 
 namespace {
-using Planner = CGAL::Pmsum::Translational_motion_planner<Mesh, Mesh>;
+using Planner = CGAL::Translational_motion_planner<Mesh, Mesh>;
 using P3 = Planner::Point_3;
 using Q = CGAL::Exact_rational;
 
@@ -204,6 +204,7 @@ TEST_CASE("planner errors: start or goal in collision, bad d", "[planning]")
   const Planning_scene s = pocket_scene(1. / 16);
   const Mesh R = to_mesh<Mesh>(s.robot), O = to_mesh<Mesh>(s.obstacle);
   CHECK_THROWS_AS(Planner::make(R, O, 0), CGAL::Pmsum::Invalid_input);
+  CHECK_THROWS_AS(Planner::make(R, O, 0.5, CGAL::parameters::roadmap_neighbors(0)), CGAL::Pmsum::Invalid_input);
   auto planner = Planner::make(R, O, 0.5);
   CHECK_THROWS_AS(planner.plan(P3(0.5, 0.5, -0.5), p3(s.goal)), CGAL::Pmsum::Invalid_input); // in the floor
   CHECK_THROWS_AS(planner.plan(p3(s.start), P3(1, 0.5, 0.5)), CGAL::Pmsum::Invalid_input);    // in the lid

@@ -20,7 +20,7 @@
 #include <tuple>
 #include <vector>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 using Mesh = CGAL::Surface_mesh<IK::Point_3>;
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, IK>;
@@ -122,6 +122,6 @@ std::pair<Result, Result> check_net_and_all(const Soup& P, const Soup& Q, double
   return r;
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_TEST_SUPPORT_H

@@ -4,7 +4,7 @@
 // test does not run Nef's slow Minkowski sum; one tiny case runs it live.
 #include "test_support.h"
 
-#include "../src/shape_presets.h"
+#include "shape_presets.h"
 
 #include <CGAL_pmsum/Nef_minkowski_sum_reference.h>
 #include <CGAL_pmsum/measure_boundary_coverage.h>
@@ -18,7 +18,7 @@
 #include <fstream>
 #include <sstream>
 
-using namespace pmsum_test;
+using namespace pmsum_shapes;
 using Reference_nef = CGAL::Pmsum::Nef_minkowski_sum_reference;
 
 namespace {
@@ -299,7 +299,7 @@ TEST_CASE("penetration depth of a non-convex pair against the exact Nef contact 
 {
   const Mesh P = to_mesh<Mesh>(l_shape()), Q = to_mesh<Mesh>(box({-0.25, -0.25, -0.25}, {0.5, 0.25, 0.25}));
   const double d = 0.05;
-  auto pd = CGAL::Pmsum::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
+  auto pd = CGAL::Penetration_depth<Mesh, Mesh>::make(P, Q, d);
   const Reference_nef ref(P, Q, /*negate_p=*/true); // the contact space -P + Q, exactly
   // exact depth: distance to the exact boundary (its triangles, rounded: error ~1e-16)
   std::vector<IK::Triangle_3> tris;

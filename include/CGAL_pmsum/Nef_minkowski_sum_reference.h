@@ -39,14 +39,30 @@
 namespace CGAL {
 namespace Pmsum {
 
+/// \ingroup PkgPointMinkowskiSumReference
+/// The exact boundary of `P + Q` (or `-P + Q`) computed with `CGAL::minkowski_sum_3()` on Nef
+/// polyhedra, to validate point-based results against: is_on_boundary() locates an exact
+/// point, shells() gives the boundary shell by shell (outer boundaries and voids) for
+/// measure_boundary_coverage(). It can be saved to and read from CGAL's exact Nef file format
+/// (.nef3), so that slow Nef computations are done once.
 class Nef_minkowski_sum_reference
 {
 public:
-  using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-  using Nef = CGAL::Nef_polyhedron_3<Kernel>;
-  using Point_3 = Kernel::Point_3;
+  using Kernel = CGAL::Exact_predicates_exact_constructions_kernel; ///< the exact kernel of the Nef polyhedron
+  using Nef = CGAL::Nef_polyhedron_3<Kernel>;                       ///< the Nef polyhedron type
+  using Point_3 = Kernel::Point_3;                                  ///< an exact point
 
-  /// Computes the exact sum. P and Q must be closed triangle meshes (outward oriented).
+  /// Computes the exact sum (regularized). The solid of a mesh is the set of points inside
+  /// an odd number of its closed components, whatever their orientation: a component inside
+  /// another bounds a void.
+  ///
+  /// \tparam MeshP, MeshQ models of `FaceListGraph` with an internal vertex point map
+  /// \param P the first mesh
+  /// \param Q the second mesh
+  /// \param negate_p compute `-P + Q` (the contact space) instead of `P + Q`
+  /// \pre `P` and `Q` are closed; their coordinates are exactly representable as `double`;
+  ///      their components do not cross each other.
+  /// \throws Invalid_input if `P` or `Q` has a border
   template <class MeshP, class MeshQ>
   Nef_minkowski_sum_reference(const MeshP& P, const MeshQ& Q, bool negate_p = false)
   {
@@ -58,8 +74,10 @@ public:
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  /// Reads a reference saved with save(). Throws Invalid_input if the text is not a whole,
-  /// consistent Nef complex (CGAL's reader would build a broken one from a truncated file).
+  /// Reads a reference saved with save(). The whole stream is read and checked first (CGAL's
+  /// reader would build a broken Nef polyhedron from a truncated file); seconds() is then 0.
+  /// \param in the stream to read from (to its end)
+  /// \throws Invalid_input if the text is not a whole, consistent Nef complex
   explicit Nef_minkowski_sum_reference(std::istream& in)
   {
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -69,26 +87,36 @@ public:
     if (!parsed || !m_nef.is_valid()) throw Invalid_input("the exact Nef boundary is not a valid Nef complex");
   }
 
+  /// Writes the sum in CGAL's exact Nef file format (.nef3), for the constructor that reads it.
+  /// \param out the stream to write to
   void save(std::ostream& out) const
   {
     Nef copy = m_nef; // CGAL's operator<< takes a non-const Nef; copies share their data
     out << copy;
   }
 
-  /// Seconds taken by minkowski_sum_3 (with the conversions), 0 if read from a file.
+  /// Tells how long the computation took.
+  /// \returns the seconds taken by `CGAL::minkowski_sum_3()` (with the conversions), 0 if
+  ///          read from a stream
   double seconds() const { return m_seconds; }
+  /// Gives the exact sum.
+  /// \returns the regularized Nef polyhedron of the sum
   const Nef& nef() const { return m_nef; }
 
-  /// Exact: is x on the boundary of the sum?
+  /// Exact: is `x` on the boundary of the sum?
+  /// \param x an exact point
+  /// \returns `true` if `x` lies on the boundary (a vertex, edge or facet of the Nef
+  ///          polyhedron), `false` if it lies in the interior or the exterior of the sum
   bool is_on_boundary(const Point_3& x) const
   {
     typename Nef::Volume_const_handle v;
     return !CGAL::assign(v, m_nef.locate(x));
   }
 
-  /// The boundary surfaces of the solid volumes, each once, triangulated and rounded to
-  /// double. In each connected solid the shell with the largest bounding box is its outer
+  /// Computes the boundary surfaces of the solid volumes, each once, triangulated and rounded
+  /// to double. In each connected solid the shell with the largest bounding box is its outer
   /// boundary; the others bound voids.
+  /// \returns the shells, with Shell::is_void set, for measure_boundary_coverage()
   std::vector<Shell> shells() const
   {
     using Shell_iterator = typename Nef::Shell_entry_const_iterator;
@@ -124,7 +152,10 @@ public:
     return out;
   }
 
-  /// Triangles of all shells, as one soup (for writing an OFF file).
+  /// Appends the triangles of all shells() to a triangle soup, to write an OFF file for instance.
+  /// \param points the soup's points, to which those of the shells are appended
+  /// \param triangles the soup's triangles, to which those of the shells are appended (as
+  ///        indices into `points`)
   void triangle_soup(std::vector<std::array<double, 3>>& points, std::vector<std::array<std::size_t, 3>>& triangles) const
   {
     for (const Shell& s : shells()) {

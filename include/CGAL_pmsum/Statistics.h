@@ -12,9 +12,15 @@
 namespace CGAL {
 namespace Pmsum {
 
+/// \ingroup PkgPointMinkowskiSumSupport
+/// Counters and timings of one run of point_minkowski_sum() (or of one level of
+/// point_minkowski_sum_coarse_to_fine()), filled when the named parameter `statistics(s)` is
+/// given. Seconds are wall-clock times.
 struct Statistics
 {
-  std::size_t samples_p = 0, samples_q = 0; ///< sizes of the d-coverings of P and Q
+  /// \var samples_p
+  /// number of samples of P (its d/2-covering: vertices, edge and face lattices)
+  std::size_t samples_p = 0, samples_q = 0; ///< number of samples of Q
   std::size_t feature_pairs = 0;            ///< feature pairs kept by the normal filter
   std::size_t candidates = 0;               ///< sample pairs p + q kept by the normal filter
   std::size_t octree_leaves = 0;            ///< leaf cells (size d) holding candidates
@@ -32,7 +38,7 @@ struct Statistics
   std::size_t trim_points = 0;              ///< output points on trim curves (between lattice points)
   std::size_t output_points = 0;            ///< the (d/2, d)-net, or every boundary candidate
   double seconds_setup = 0;                 ///< input checks, sampling resolutions, AABB trees
-  double seconds_normal_filter = 0;
+  double seconds_normal_filter = 0;         ///< normal filter (coarse to fine: first level only, else 0)
   double seconds_octree_filter = 0;         ///< interior certificate and leaf cells
   double seconds_cd_filter = 0;             ///< candidate enumeration and CD filter
 };

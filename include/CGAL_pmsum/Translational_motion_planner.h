@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// CGAL::Pmsum::Translational_motion_planner: paths of a robot P translating among fixed
+// CGAL::Translational_motion_planner: paths of a robot P translating among fixed
 // obstacles Q (paper section 9.2), from points covering the contact space C = boundary of
 // (-P) + Q.
 //
@@ -59,6 +59,7 @@
 namespace CGAL {
 namespace Pmsum {
 
+/// \ingroup PkgPointMinkowskiSumPlanner
 /// Counters and seconds of a planner (make) and of its last query (plan).
 struct Planner_statistics
 {
@@ -76,13 +77,24 @@ struct Planner_statistics
   double seconds_query = 0;         ///< last plan()
 };
 
+} // namespace Pmsum
+
+/// \ingroup PkgPointMinkowskiSumPlanner
+/// Paths of a robot `P` translating among fixed obstacles `Q`, on a roadmap over points
+/// covering the contact space, the boundary of `-P + Q`. Sound: every segment of a returned
+/// path is free, checked exactly; not complete (see the file comment). Made by make().
+///
+/// \tparam PolygonMeshP, PolygonMeshQ models of `FaceListGraph`
 template <class PolygonMeshP, class PolygonMeshQ>
 class Translational_motion_planner
 {
 public:
+  /// the kernel of the queries and answers
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  /// a translation of the robot
   using Point_3 = Kernel::Point_3;
 
+  /// The answer to plan().
   struct Result
   {
     bool found = false;          ///< false: start and goal are not connected in the roadmap
@@ -90,45 +102,65 @@ public:
     double length = 0;           ///< Euclidean length of the path
   };
 
-  /// Computes the contact space of robot P (moving) and obstacles Q (fixed) with covering
-  /// distance d and the roadmap joining each contact point to its `k` nearest ones.
-  /// `ConcurrencyTag` as in point_minkowski_sum() (for the contact space).
-  /// \pre d > 0, k >= 1; P and Q as for point_minkowski_sum(). Violations throw Invalid_input.
-  template <class ConcurrencyTag = CGAL::Sequential_tag>
+  /// Computes the contact space of robot `P` (moving) and obstacles `Q` (fixed) with
+  /// covering distance `d` and the roadmap joining each contact point to its nearest ones.
+  ///
+  /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (for the contact space)
+  /// \param P the robot
+  /// \param Q the obstacles
+  /// \param d covering distance of the contact points
+  /// \param np_p named parameters of `P` and of the algorithm: those of point_minkowski_sum()
+  ///        (`statistics` receives the contact space's; `negate_first_mesh` is implied) and
+  ///        `roadmap_neighbors` (12: the number of nearest nodes each node is joined to)
+  /// \param np_q named parameters of `Q` (`vertex_point_map`)
+  /// \returns the planner, ready for queries
+  /// \pre `d > 0`, `roadmap_neighbors >= 1`; `P` and `Q` as for point_minkowski_sum().
+  ///      Violations throw `CGAL::Pmsum::Invalid_input`.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class NamedParametersP = parameters::Default_named_parameters,
+            class NamedParametersQ = parameters::Default_named_parameters>
   static Translational_motion_planner make(const PolygonMeshP& P, const PolygonMeshQ& Q, double d,
-                                           unsigned k = 12)
+                                           const NamedParametersP& np_p = parameters::default_values(),
+                                           const NamedParametersQ& np_q = parameters::default_values())
   {
-    internal::check_covering_distance(d);
-    CGAL_precondition_msg(k >= 1, "k must be at least 1");
-    if (k < 1) throw Invalid_input("k (neighbours per node) must be at least 1");
-    const auto start = internal::Clock::now();
-    Translational_motion_planner pl(P, Q, d, k);
-    Statistics stats;
+    namespace in = Pmsum::internal;
+    const unsigned k = parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::roadmap_neighbors), 12u);
+    CGAL_precondition_msg(k >= 1, "roadmap_neighbors must be at least 1");
+    if (k < 1) throw Pmsum::Invalid_input("roadmap_neighbors (neighbours per node) must be at least 1");
+    Pmsum::Statistics local_stats;
+    in::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(
+      P, Q, d, np_p, np_q, local_stats, in::Negation::always);
+    in::Mesh_descriptors<PolygonMeshP> desc_p;
+    Translational_motion_planner pl(d, k, in::read_mesh(P, np_p, false, sum.check_overlaps, "P", desc_p),
+                                    std::move(sum.mp), std::move(sum.mq));
     std::vector<std::pair<Point, Point>> contacts; // point, outward direction
     // The default net, plus every vertex + vertex contact: the corners of a passage, where a
     // path turns, are such points, and a net may cover them from a node that sees no corner.
-    internal::Pipeline_options options;
-    options.keep_vertex_sums = true;
-    internal::run_pipeline<ConcurrencyTag>(
-      *pl.m_minus_p, *pl.m_q, d, options, stats,
-      [&](const internal::Sample& sp, const internal::Sample& sq, const internal::Direction& dir,
-          const internal::Trim* trim) {
-        Point x;
-        for (int c = 0; c < 3; ++c)
-          x[c] = CGAL::to_double(internal::sum_coordinate<CGAL::Exact_rational>(*pl.m_minus_p, *pl.m_q, sp, sq, trim, c));
-        contacts.emplace_back(x, unit(dir.vector<double>(*pl.m_minus_p, *pl.m_q)));
+    sum.options.keep_vertex_sums = true;
+    using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>; // rounded once, to the nearest doubles
+    const in::Mesh_data &minus_p = *pl.m_minus_p, &q = *pl.m_q;
+    in::run_pipeline<ConcurrencyTag>(
+      minus_p, q, d, sum.options, sum.stats,
+      [&](const in::Sample& sp, const in::Sample& sq, const in::Direction& dir, const in::Trim* trim) {
+        const auto x = in::output_point<Exact>(minus_p, q, sp, sq, trim);
+        const auto n = in::output_normal<Kernel>(minus_p, q, dir);
+        contacts.emplace_back(Point{CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())},
+                              Point{n.x(), n.y(), n.z()});
       },
-      start);
+      sum.start);
     pl.m_stats.contact_points = contacts.size();
-    pl.m_stats.seconds_contact_space = internal::seconds_since(start);
+    pl.m_stats.seconds_contact_space = in::seconds_since(sum.start);
     pl.build_roadmap(std::move(contacts));
     return pl;
   }
 
-  const Planner_statistics& statistics() const { return m_stats; }
+  /// \returns the counters and seconds of make() and of the last plan()
+  const Pmsum::Planner_statistics& statistics() const { return m_stats; }
+  /// \returns the covering distance `d` given to make()
   double covering_distance() const { return m_d; }
+  /// \returns the number of roadmap nodes
   std::size_t number_of_nodes() const { return m_nodes.size(); }
   /// The roadmap's nodes (contact configurations, rounded to double on their free side).
+  /// \returns a copy of the nodes
   std::vector<Point_3> nodes() const
   {
     std::vector<Point_3> r;
@@ -138,11 +170,15 @@ public:
 
   /// Exact: is the translation t in the regular free space, i.e. is some infinitesimal move
   /// of t strictly free? (Not thread-safe: one planner per thread.)
+  /// \param t a translation of the robot
+  /// \returns whether `t` is in the regular free space
   bool is_free(const Point_3& t) { Point v; return free_direction(to_point(t), v, nullptr); }
 
   /// Exact: is every translation of the segment [a, b] in the regular free space? Tested as
   /// the robot swept along it, moved by an infinitesimal translation along the free
   /// directions of a and b. (False if a or b is not free.)
+  /// \param a, b the segment's ends
+  /// \returns whether the whole segment is in the regular free space
   bool is_free(const Point_3& a, const Point_3& b)
   {
     const Point pa = to_point(a), pb = to_point(b);
@@ -157,22 +193,24 @@ public:
   }
 
   /// A free polyline from `start` to `goal` (translations of P), or found == false.
-  /// Throws Invalid_input if start or goal is not free (P + start overlaps Q).
   /// Not thread-safe (edge checks are cached in the planner).
+  /// \param start, goal translations of the robot
+  /// \returns the path (`found`, `path`, `length`)
+  /// \pre start and goal are finite and free; violations throw `CGAL::Pmsum::Invalid_input`
   Result plan(const Point_3& start, const Point_3& goal)
   {
-    const auto t0 = internal::Clock::now();
+    const auto t0 = Pmsum::internal::Clock::now();
     m_stats.search_iterations = 0;
     m_stats.shortcut_tests = 0;
     Result result;
     const Point s = to_point(start), g = to_point(goal);
     for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(s[c]) || !std::isfinite(g[c])) throw Invalid_input("start and goal must be finite");
+      if (!std::isfinite(s[c]) || !std::isfinite(g[c])) throw Pmsum::Invalid_input("start and goal must be finite");
     Point vs, vg;
     if (!free_direction(s, vs, nullptr))
-      throw Invalid_input("the start configuration is not free: the robot overlaps the obstacle there");
+      throw Pmsum::Invalid_input("the start configuration is not free: the robot overlaps the obstacle there");
     if (!free_direction(g, vg, nullptr))
-      throw Invalid_input("the goal configuration is not free: the robot overlaps the obstacle there");
+      throw Pmsum::Invalid_input("the goal configuration is not free: the robot overlaps the obstacle there");
 
     // Start and goal as temporary nodes n and n + 1, with edges to their nearest nodes.
     const Index n = Index(m_nodes.size());
@@ -211,12 +249,12 @@ public:
     }
     m_nodes.resize(n);
     m_edges.resize(base_edges);
-    m_stats.seconds_query = internal::seconds_since(t0);
+    m_stats.seconds_query = Pmsum::internal::seconds_since(t0);
     return result;
   }
 
 private:
-  using Index = internal::Index;
+  using Index = Pmsum::internal::Index;
   using Point = std::array<double, 3>;
 
   struct Node
@@ -236,17 +274,13 @@ private:
     State state;
   };
 
-  Translational_motion_planner(const PolygonMeshP& P, const PolygonMeshQ& Q, double d, unsigned k) : m_d(d), m_k(k)
+  Translational_motion_planner(double d, unsigned k, Pmsum::internal::Mesh_data p, Pmsum::internal::Mesh_data minus_p,
+                               Pmsum::internal::Mesh_data q)
+    : m_d(d), m_k(k), m_p(std::make_shared<Pmsum::internal::Mesh_data>(std::move(p))),
+      m_minus_p(std::make_shared<Pmsum::internal::Mesh_data>(std::move(minus_p))),
+      m_q(std::make_shared<Pmsum::internal::Mesh_data>(std::move(q)))
   {
-    internal::Mesh_descriptors<PolygonMeshP> dp, dp2;
-    internal::Mesh_descriptors<PolygonMeshQ> dq;
-    m_p = std::make_shared<internal::Mesh_data>(
-      internal::make_mesh_data(P, get(CGAL::vertex_point, P), false, false, "P", dp));
-    m_minus_p = std::make_shared<internal::Mesh_data>(
-      internal::make_mesh_data(P, get(CGAL::vertex_point, P), true, false, "P", dp2));
-    m_q = std::make_shared<internal::Mesh_data>(
-      internal::make_mesh_data(Q, get(CGAL::vertex_point, Q), false, false, "Q", dq));
-    m_swept = std::make_shared<internal::Swept_cd>(*m_p, *m_q);
+    m_swept = std::make_shared<Pmsum::internal::Swept_cd>(*m_p, *m_q);
   }
 
   static Point unit(const Point& v)
@@ -275,7 +309,7 @@ private:
 
   void build_roadmap(std::vector<std::pair<Point, Point>> contacts)
   {
-    const auto t0 = internal::Clock::now();
+    const auto t0 = Pmsum::internal::Clock::now();
     // Distinct points (pairs of features may give the same sum): keep the first direction.
     std::stable_sort(contacts.begin(), contacts.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });
@@ -312,7 +346,7 @@ private:
       m_edges.push_back(Edge{a, b, distance(m_nodes[a].p, m_nodes[b].p), Edge::UNKNOWN});
     }
     m_stats.roadmap_edges = m_edges.size();
-    m_stats.seconds_roadmap = internal::seconds_since(t0);
+    m_stats.seconds_roadmap = Pmsum::internal::seconds_since(t0);
   }
 
   // ----- exact checks ------------------------------------------------------------------
@@ -443,10 +477,10 @@ private:
 
   Index edge_between(Index u, Index v, const std::vector<std::vector<Index>>& extra) const
   {
-    Index best = internal::no_index;
+    Index best = Pmsum::internal::no_index;
     for_each_edge(u, extra, [&](Index e) {
       const Edge& ed = m_edges[e];
-      if (((ed.a == u && ed.b == v) || (ed.a == v && ed.b == u)) && best == internal::no_index) best = e;
+      if (((ed.a == u && ed.b == v) || (ed.a == v && ed.b == u)) && best == Pmsum::internal::no_index) best = e;
     });
     return best;
   }
@@ -456,7 +490,7 @@ private:
   {
     const std::size_t N = m_nodes.size();
     std::vector<double> cost(N, std::numeric_limits<double>::infinity());
-    std::vector<Index> from(N, internal::no_index);
+    std::vector<Index> from(N, Pmsum::internal::no_index);
     std::vector<char> closed(N, 0);
     using Entry = std::pair<double, Index>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
@@ -483,7 +517,7 @@ private:
     }
     std::vector<Index> path;
     if (!closed[g]) return path;
-    for (Index u = g; u != internal::no_index; u = from[u]) path.push_back(u);
+    for (Index u = g; u != Pmsum::internal::no_index; u = from[u]) path.push_back(u);
     std::reverse(path.begin(), path.end());
     return path;
   }
@@ -508,17 +542,16 @@ private:
 
   double m_d;
   unsigned m_k;
-  std::shared_ptr<internal::Mesh_data> m_p, m_minus_p, m_q;
-  std::shared_ptr<internal::Swept_cd> m_swept;
+  std::shared_ptr<Pmsum::internal::Mesh_data> m_p, m_minus_p, m_q;
+  std::shared_ptr<Pmsum::internal::Swept_cd> m_swept;
   std::vector<Node> m_nodes;
   std::vector<Edge> m_edges;
   std::vector<std::vector<Index>> m_adjacency;
   std::shared_ptr<std::vector<Point_3>> m_tree_points = std::make_shared<std::vector<Point_3>>();
   std::shared_ptr<Tree> m_tree;
-  Planner_statistics m_stats;
+  Pmsum::Planner_statistics m_stats;
 };
 
-} // namespace Pmsum
 } // namespace CGAL
 
 #endif // CGAL_PMSUM_TRANSLATIONAL_MOTION_PLANNER_H

@@ -14,53 +14,76 @@
 namespace CGAL {
 namespace Pmsum {
 
-/// Input the algorithm cannot handle: empty mesh, non-triangle or degenerate face,
-/// coordinate that is not finite or not a double, inward orientation, d <= 0, ...
+/// \ingroup PkgPointMinkowskiSumSupport
+/// Input the algorithm cannot handle, such as an empty mesh, a non-triangle or degenerate face,
+/// a coordinate that is not finite or not a double, a wrong orientation, or `d <= 0`.
+/// The entry points throw it when a checked precondition fails, before writing anything;
+/// Nef_minkowski_sum_reference throws it for a mesh with a border or an invalid file.
+/// Constructed from its message, as `std::invalid_argument`.
 class Invalid_input : public std::invalid_argument
 {
 public:
   using std::invalid_argument::invalid_argument;
 };
 
-/// A run refused for its size before the work is done: the base of the two errors below.
+/// \ingroup PkgPointMinkowskiSumSupport
+/// A run refused for its size before the work is done: the base of Too_many_candidates and
+/// Covering_distance_too_small. Constructed from its message, as `std::runtime_error`.
 class Too_large : public std::runtime_error
 {
 public:
   using std::runtime_error::runtime_error;
 };
 
+/// \ingroup PkgPointMinkowskiSumSupport
 /// The candidate count exceeds the limit set with `maximum_number_of_candidates()`.
 class Too_many_candidates : public Too_large
 {
 public:
+  /// Constructs the error with a message that gives both numbers.
+  /// \param candidates the number of candidates
+  /// \param limit the limit they exceed
   Too_many_candidates(std::size_t candidates, std::size_t limit)
     : Too_many_candidates(candidates, limit, "the normal filter leaves " + std::to_string(candidates) +
                                                " candidate points, more than the limit of " + std::to_string(limit)) {}
+  /// Constructs the error with the message `what`.
+  /// \param candidates the number of candidates
+  /// \param limit the limit they exceed
+  /// \param what the message
   Too_many_candidates(std::size_t candidates, std::size_t limit, const std::string& what)
     : Too_large(what), candidates(candidates), limit(limit) {}
-  std::size_t candidates, limit;
+  /// \var candidates
+  /// the number of candidates (Too_many_feature_pairs: of (feature pair, direction) records)
+  std::size_t candidates, limit; ///< the limit set with `maximum_number_of_candidates()`
 };
 
+/// \ingroup PkgPointMinkowskiSumSupport
 /// Without the normal filter: the (feature pair, direction) records to store exceed the
 /// limit set with `maximum_number_of_candidates()` (checked before they are stored).
+/// It has the constructors of Too_many_candidates; `candidates` is the number of records.
 class Too_many_feature_pairs : public Too_many_candidates
 {
 public:
+  /// \cond
   using Too_many_candidates::Too_many_candidates;
+  /// \endcond
 };
 
+/// \ingroup PkgPointMinkowskiSumSupport
 /// `d` is so small that a feature would need more subdivisions than the sample lattice
-/// holds (2^20 along an edge).
+/// holds (2^20 along an edge). Constructed from its message, as `std::runtime_error`.
 class Covering_distance_too_small : public Too_large
 {
 public:
   using Too_large::Too_large;
 };
 
-/// The progress callback returned false.
+/// \ingroup PkgPointMinkowskiSumSupport
+/// The progress callback (named parameter `callback`) returned false.
 class Operation_cancelled : public std::runtime_error
 {
 public:
+  /// Constructs the error with the message "point_minkowski_sum was cancelled by its callback".
   Operation_cancelled() : std::runtime_error("point_minkowski_sum was cancelled by its callback") {}
 };
 

@@ -21,22 +21,27 @@
 namespace CGAL {
 namespace Pmsum {
 
+/// \ingroup PkgPointMinkowskiSumCoverage
 /// One connected boundary surface (triangle soup).
 struct Shell
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::array<double, 3>> points;          ///< the vertices
+  std::vector<std::array<std::size_t, 3>> triangles;  ///< the triangles, as indices into `points`
   bool is_void = false; ///< bounds a void (hole) of the solid rather than its outside
 };
 
-/// Coverage of one shell.
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// Coverage of one shell, as measured by measure_boundary_coverage().
 struct Shell_coverage
 {
-  bool is_void = false;
-  std::size_t triangles = 0;
+  bool is_void = false;         ///< the shell's Shell::is_void
+  std::size_t triangles = 0;    ///< number of triangles of the shell
   std::size_t samples = 0;      ///< points of the shell the distance was measured at
   double worst_distance = 0;    ///< largest distance from a sample to the nearest point
   std::size_t touched = 0;      ///< samples that have a point closer than d
+  /// Tells whether the samples are covered within `d`.
+  /// \param d a covering distance
+  /// \returns `worst_distance < d`
   bool covered(double d) const { return worst_distance < d; }
 };
 
@@ -59,10 +64,24 @@ struct Point_search
 };
 } // namespace internal
 
-/// Samples every triangle of every shell with the closed lattice of spacing at most
-/// `spacing` (vertices and edges included) and returns, per shell, the largest distance to
-/// the nearest point of `points`, and how many samples have a point closer than `d`.
-/// \pre spacing > 0
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// Measures how well `points` cover each shell: samples every triangle of every shell with
+/// the closed lattice of spacing at most `spacing` (vertices and edges included) and finds,
+/// per shell, the largest distance from a sample to the nearest point of `points`, and how
+/// many samples have a point closer than `d`.
+///
+/// The distance is measured at the samples only: the largest distance from the shell to
+/// `points` may exceed Shell_coverage::worst_distance by less than `spacing`.
+///
+/// \tparam PointRange a range of points with `x()`, `y()` and `z()` convertible with
+///         `CGAL::to_double()` (e.g. `std::vector<Kernel::Point_3>`)
+/// \param shells the surface, e.g. Nef_minkowski_sum_reference::shells()
+/// \param points the points to measure, e.g. the output of point_minkowski_sum()
+/// \param d the covering distance that Shell_coverage::touched counts
+/// \param spacing the largest spacing of the samples on each triangle
+/// \returns one Shell_coverage per shell, in the order of `shells` (a worst distance of
+///          infinity if `points` is empty)
+/// \pre `spacing > 0`
 template <class PointRange>
 std::vector<Shell_coverage> measure_boundary_coverage(const std::vector<Shell>& shells, const PointRange& points,
                                                      double d, double spacing)
@@ -104,7 +123,14 @@ std::vector<Shell_coverage> measure_boundary_coverage(const std::vector<Shell>& 
   return out;
 }
 
-/// The smallest distance between two of `points` (infinity for fewer than two points).
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// Computes the smallest distance between two of `points`, to check the `d/2` separation
+/// of a (d/2, d)-net for instance.
+///
+/// \tparam PointRange as for measure_boundary_coverage()
+/// \param points the points
+/// \returns the smallest distance between two points of `points` (rounded to double
+///          first), 0 if two are equal, infinity for fewer than two points
 template <class PointRange>
 double measure_point_spacing(const PointRange& points)
 {
@@ -121,7 +147,10 @@ double measure_point_spacing(const PointRange& points)
   return best;
 }
 
-/// Total area of the shells.
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// Computes the total area of the shells.
+/// \param shells the shells
+/// \returns the sum of the areas of their triangles
 inline double shells_area(const std::vector<Shell>& shells)
 {
   double area = 0;
@@ -135,8 +164,14 @@ inline double shells_area(const std::vector<Shell>& shells)
   return area;
 }
 
-/// Number of points of an ideal d-covering of a surface of area `area`: the hexagonal
-/// covering, one point per hexagon of circumradius d (area 2.598 d^2).
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// Computes the number of points of an ideal d-covering of a surface of area `area`: the
+/// hexagonal covering, one point per hexagon of circumradius d (area 2.598 d^2), to compare
+/// an output's size with.
+/// \param area the area of the surface, e.g. shells_area()
+/// \param d the covering distance
+/// \returns `area / (1.5 * sqrt(3) * d * d)` (not rounded)
+/// \pre `d > 0`
 inline double ideal_covering_size(double area, double d) { return area / (1.5 * std::sqrt(3.0) * d * d); }
 
 } // namespace Pmsum

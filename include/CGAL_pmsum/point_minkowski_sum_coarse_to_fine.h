@@ -13,7 +13,7 @@
 
 namespace CGAL {
 
-/// \ingroup PkgPointMinkowskiSumRef
+/// \ingroup PkgPointMinkowskiSumSum
 /// Computes point_minkowski_sum() for the covering distances `ds[0] > ds[1] > ...`, coarse
 /// to fine, and calls `level_output(k, statistics, records)` once level `k` is complete,
 /// with its `CGAL::Pmsum::Statistics` and a `std::vector` of its
@@ -27,11 +27,28 @@ namespace CGAL {
 /// candidate again, and its decision, boundary point or not, is reused without a collision
 /// test. Every level is exact and covers the boundary within its `ds[k]`.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`, as for
+///         point_minkowski_sum()
+/// \tparam PolygonMeshP, PolygonMeshQ models of `FaceListGraph`, as for point_minkowski_sum()
+/// \tparam LevelOutput a callable as `level_output(std::size_t k, const CGAL::Pmsum::Statistics& s,
+///         std::vector<R>&& records)`, with `R` the record type
+///         `CGAL::Pmsum::Minkowski_sum_boundary_point<PolygonMeshP, PolygonMeshQ, GeomTraits>`
+///         (`GeomTraits`: the geometric traits of `P`)
+/// \tparam NamedParametersP, NamedParametersQ sequences of named parameters, as for
+///         point_minkowski_sum()
+///
+/// \param P the first mesh
+/// \param Q the second mesh
 /// \param ds covering distances, each > 0, strictly decreasing
-/// \param np_p, np_q as for point_minkowski_sum(); `statistics` receives the last level's.
+/// \param level_output called once per level, in the order of `ds`, with the level's index,
+///        statistics and records
+/// \param np_p named parameters of `P` and of the algorithm, as for point_minkowski_sum();
+///        `statistics` receives the last level's.
+/// \param np_q named parameters of `Q`, as for point_minkowski_sum()
 ///
 /// \pre `ds` is non-empty and strictly decreasing; the other preconditions of
-///      point_minkowski_sum(). Violations throw `CGAL::Pmsum::Invalid_input`.
+///      point_minkowski_sum(). Violations throw `CGAL::Pmsum::Invalid_input` before
+///      `level_output` is called.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMeshP, class PolygonMeshQ, class LevelOutput,
           class NamedParametersP = parameters::Default_named_parameters,
           class NamedParametersQ = parameters::Default_named_parameters>

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// CGAL::Pmsum::point_sweep(): points covering the boundary of the volume swept by a solid P
+// CGAL::point_sweep(): points covering the boundary of the volume swept by a solid P
 // translating along a polyline (paper Fig. 11): the Minkowski sum P + path, with the path a
 // mesh of edges only. Every point is exactly on the boundary of the swept volume; together
 // they cover it within d (same guarantees as point_minkowski_sum()).
@@ -14,39 +14,46 @@
 #include <vector>
 
 namespace CGAL {
-namespace Pmsum {
 
-/// \param path the positions of P's reference point (its origin) along the motion, in order:
-///        a range of points with x(), y(), z() exactly representable as double
-/// \pre d > 0; P as for point_minkowski_sum(); path has at least two points and no two
-///      equal consecutive points. Violations throw Invalid_input.
-/// The output iterator receives points of P's kernel.
-template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, class PointRange, class OutputIterator>
+/// \ingroup PkgPointMinkowskiSumSweep
+/// Computes points covering the boundary of the volume swept by the solid `P` translating
+/// along a polyline: the Minkowski sum of `P` and the path. Every point is exactly on the
+/// boundary of the swept volume; together they cover it within `d` (the guarantees of
+/// point_minkowski_sum()).
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+/// \tparam PolygonMesh a model of `FaceListGraph`
+/// \tparam PointRange a range of points with `x()`, `y()`, `z()`
+/// \tparam OutputIterator receives `Point_3` of the geometric traits of `P`
+/// \param P the moving solid
+/// \param path the positions of P's reference point (its origin) along the motion, in order
+/// \param d covering distance
+/// \param out where the points go
+/// \param np named parameters of `P` (`vertex_point_map`, `geom_traits`) and of the
+///        algorithm: those of point_minkowski_sum() but `negate_first_mesh`
+/// \returns the output iterator past the last point written
+/// \pre `d > 0`; `P` as for point_minkowski_sum(); `path` has at least two points, no two
+///      equal consecutive points, coordinates exactly representable as `double`. Violations
+///      throw `CGAL::Pmsum::Invalid_input` before anything is written.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, class PointRange, class OutputIterator,
+          class NamedParameters = parameters::Default_named_parameters>
 OutputIterator point_sweep(const PolygonMesh& P, const PointRange& path, double d, OutputIterator out,
-                           Statistics* statistics = nullptr)
+                           const NamedParameters& np = parameters::default_values())
 {
-  namespace in = internal;
-  using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::const_type>::value_type;
-  using FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
-  internal::check_covering_distance(d);
-  const auto start = in::Clock::now();
+  namespace in = Pmsum::internal;
+  static_assert(!in::has_parameter<NamedParameters, Pmsum::internal_np::negate_first_mesh_t>(),
+                "CGAL_pmsum: point_sweep() takes no negate_first_mesh");
+  using GT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  Pmsum::Statistics local_stats;
+  const in::Sum_settings settings(d, np, local_stats);
   in::Mesh_descriptors<PolygonMesh> desc;
-  const in::Mesh_data mp = in::make_mesh_data(P, get(CGAL::vertex_point, P), false, false, "P", desc);
+  const in::Mesh_data mp = in::read_mesh(P, np, false, settings.check_overlaps, "P", desc);
   const in::Mesh_data mq = in::make_polyline_data(path, "path");
-  Statistics local;
-  Statistics& stats = statistics ? *statistics : local;
-  stats = Statistics();
-  in::run_pipeline<ConcurrencyTag>(mp, mq, d, in::Pipeline_options{}, stats,
-                                   [&](const in::Sample& sp, const in::Sample& sq, const in::Direction&, const in::Trim* trim) {
-                                     *out++ = Point(in::sum_coordinate<FT>(mp, mq, sp, sq, trim, 0),
-                                                    in::sum_coordinate<FT>(mp, mq, sp, sq, trim, 1),
-                                                    in::sum_coordinate<FT>(mp, mq, sp, sq, trim, 2));
-                                   },
-                                   start);
+  in::run_pipeline<ConcurrencyTag>(mp, mq, d, settings.options, settings.stats, in::make_point_emit<GT>(mp, mq, out),
+                                   settings.start);
   return out;
 }
 
-} // namespace Pmsum
 } // namespace CGAL
 
 #endif // CGAL_PMSUM_POINT_SWEEP_H

@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 namespace suite_internal {
 
@@ -206,6 +206,6 @@ inline Soup torus_knot(int p = 2, int q = 3, double R = 2, double r = 1, double 
   return s;
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_SUITE_SHAPES_H

@@ -19,7 +19,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 inline const std::map<std::string, std::function<Soup()>>& shape_presets()
 {
@@ -74,6 +74,6 @@ inline void write_off(const Soup& s, std::ostream& o)
   for (const auto& t : s.triangles) o << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_SHAPE_PRESETS_H

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 struct Planning_scene
 {
@@ -87,6 +87,6 @@ inline Planning_scene slot_scene(double g = 1. / 16)
   return s;
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_PLANNING_SCENES_H

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <vector>
 
-namespace pmsum_test {
+namespace pmsum_shapes {
 
 using Point = std::array<double, 3>;
 
@@ -255,6 +255,6 @@ inline Soup rotated(Soup s, const std::array<int, 4>& q = {2, 1, 1, 1})
   return s;
 }
 
-} // namespace pmsum_test
+} // namespace pmsum_shapes
 
 #endif // CGAL_PMSUM_TEST_SHAPES_H
