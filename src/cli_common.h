@@ -266,6 +266,9 @@ struct Sum_input
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
   bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, islands = true, force = false, quiet = false;
   int threads = 0; // 0: all cores
+  // Called with the progress too (the Python module: Ctrl-C and its progress callback);
+  // false cancels (CGAL::Pmsum::Operation_cancelled). The tool leaves it empty.
+  std::function<bool(double)> callback;
   std::vector<double> coarser_d; // --levels: coarser covering distances, coarse to fine (absolute)
 };
 
@@ -350,7 +353,7 @@ inline std::vector<Record> compute_sum(
   const std::size_t limit = in.force ? std::size_t(-1) : memory_budget_bytes() / sizeof(Record);
   std::vector<Record> records;
   Progress progress(!in.quiet);
-  std::function<bool(double)> callback = [&](double f) { return progress(f); };
+  std::function<bool(double)> callback = [&](double f) { return (!in.callback || in.callback(f)) && progress(f); };
   const auto np = CGAL::parameters::use_normal_filter(in.normal_filter)
                     .use_cd_filter(in.cd_filter)
                     .use_octree_filter(in.octree_filter)
