@@ -26,7 +26,11 @@ fi
 jobs=$(nproc 2>/dev/null || echo 2)
 phase() { echo "quickstart: $1: $(( SECONDS - phase_start )) s"; phase_start=$SECONDS; }
 phase_start=$SECONDS
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
+# test: the Python module and the reference manual's check are asked for, so that a missing
+# dependency (or an earlier demo configuration without them) fails instead of skipping them
+extra=()
+[ "$mode" = test ] && extra=(-DPMSUM_BUILD_PYTHON=ON -DPMSUM_CHECK_DOCS=ON)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${extra[@]}" > /dev/null
 if [ "$mode" = demo ]; then
   cmake --build build -j "$jobs" --target pmsum_cli   # the demo runs the tool only
 else

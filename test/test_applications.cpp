@@ -431,3 +431,78 @@ TEST_CASE("records into a Point_set_3: points, normals, provenance, PLY", "[appl
   i = 0;
   for (auto it = back.begin(); it != back.end(); ++it, ++i) CHECK(get(dim.first, *it) == recs[i].origin_p.dimension);
 }
+
+#include <CGAL_pmsum/point_minkowski_sum_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+TEST_CASE("check_mesh: border, self-intersection, orientation, voids", "[applications][mesh]")
+{
+  using CGAL::Pmsum::check_mesh;
+  const auto c1 = check_mesh(to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1})));
+  CHECK(c1.valid());
+  CHECK(c1.shells == 1);
+  CHECK(c1.void_shells == 0);
+  CHECK_FALSE(check_mesh(to_mesh<Mesh>(open_box({0, 0, 0}, {1, 1, 1}))).closed);
+  Soup crossing = box({0, 0, 0}, {1, 1, 1});
+  crossing.append(box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}));
+  const auto c2 = check_mesh(to_mesh<Mesh>(crossing));
+  CHECK(c2.closed);
+  CHECK_FALSE(c2.self_intersection_free);
+  CHECK_FALSE(c2.valid());
+  // a box with a cubic void: inward inner shell
+  Mesh hollow = to_mesh<Mesh>(box({0, 0, 0}, {3, 3, 3}));
+  Mesh inner = to_mesh<Mesh>(box({1, 1, 1}, {2, 2, 2}));
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(inner);
+  hollow.join(inner);
+  const auto c3 = check_mesh(hollow);
+  CHECK(c3.valid());
+  CHECK(c3.shells == 2);
+  CHECK(c3.void_shells == 1);
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(hollow); // inside out
+  CHECK_FALSE(check_mesh(hollow).bounds_a_volume);
+}
+
+TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of it", "[applications][mesh]")
+{
+  // [0, 1]^3 + [0, 0.5] x [0, 0.25] x [0, 0.5]: the box [0, 1.5] x [0, 1.25] x [0, 1.5]
+  const Mesh P = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1})), Q = to_mesh<Mesh>(box({0, 0, 0}, {0.5, 0.25, 0.5}));
+  const double d = 0.1, hi[3] = {1.5, 1.25, 1.5};
+  Mesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::point_minkowski_sum_mesh(P, Q, d, m, CGAL::parameters::mesh_statistics(ms));
+  const auto c = CGAL::Pmsum::check_mesh(m);
+  REQUIRE(c.valid());
+  CHECK(c.shells == 1);
+  CHECK(ms.checks.valid());
+  CHECK(ms.vertices == num_vertices(m));
+  CHECK(ms.triangles == num_faces(m));
+  CHECK(ms.sum.output_points == num_vertices(m)); // the vertices are the sum's points
+  // every vertex on the box's surface; every point of a triangle within d of it
+  auto surface_distance = [&](const IK::Point_3& x) {
+    double out = 0, in = HUGE_VAL;
+    for (int k = 0; k < 3; ++k) {
+      const double e = (std::max)({-x[k], 0., x[k] - hi[k]});
+      out += e * e;
+      in = (std::min)({in, x[k], hi[k] - x[k]});
+    }
+    return out > 0 ? std::sqrt(out) : in;
+  };
+  double worst_vertex = 0, worst = 0;
+  for (auto v : m.vertices()) worst_vertex = (std::max)(worst_vertex, surface_distance(m.point(v)));
+  for (auto f : m.faces()) {
+    std::vector<IK::Point_3> t;
+    for (auto v : vertices_around_face(m.halfedge(f), m)) t.push_back(m.point(v));
+    for (double a = 0; a <= 1; a += 0.25)
+      for (double b = 0; a + b <= 1; b += 0.25) {
+        const double g = 1 - a - b;
+        worst = (std::max)(worst, surface_distance(IK::Point_3(a * t[0].x() + b * t[1].x() + g * t[2].x(),
+                                                               a * t[0].y() + b * t[1].y() + g * t[2].y(),
+                                                               a * t[0].z() + b * t[1].z() + g * t[2].z())));
+      }
+  }
+  CHECK(worst_vertex < 1e-12);
+  CHECK(worst < d);
+  // the volume of the mesh is the box's, within the error of cutting its edges by chords
+  CHECK(std::abs(CGAL::Polygon_mesh_processing::volume(m) - 1.5 * 1.25 * 1.5) < 0.05);
+}

@@ -70,6 +70,10 @@ public:
                                 const NamedParametersQ& np_q = parameters::default_values())
   {
     namespace in = Pmsum::internal;
+    static_assert(!in::has_any_parameter<NamedParametersP, Pmsum::internal_np::negate_first_mesh_t,
+                                         Pmsum::internal_np::roadmap_neighbors_t, Pmsum::internal_np::mesh_statistics_t>(),
+                  "CGAL_pmsum: Penetration_depth implies negate_first_mesh and takes no roadmap_neighbors or "
+                  "mesh_statistics");
     Pmsum::Statistics local_stats;
     in::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(
       P, Q, d, np_p, np_q, local_stats, in::Negation::always);

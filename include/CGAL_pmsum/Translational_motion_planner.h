@@ -123,6 +123,9 @@ public:
                                            const NamedParametersQ& np_q = parameters::default_values())
   {
     namespace in = Pmsum::internal;
+    static_assert(!in::has_any_parameter<NamedParametersP, Pmsum::internal_np::negate_first_mesh_t,
+                                         Pmsum::internal_np::mesh_statistics_t>(),
+                  "CGAL_pmsum: Translational_motion_planner implies negate_first_mesh and takes no mesh_statistics");
     const unsigned k = parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::roadmap_neighbors), 12u);
     CGAL_precondition_msg(k >= 1, "roadmap_neighbors must be at least 1");
     if (k < 1) throw Pmsum::Invalid_input("roadmap_neighbors (neighbours per node) must be at least 1");

@@ -38,6 +38,7 @@ enum treat_as_surface_t { treat_as_surface };
 enum maximum_number_of_candidates_t { maximum_number_of_candidates };
 enum check_overlaps_t { check_overlaps };
 enum roadmap_neighbors_t { roadmap_neighbors };
+enum mesh_statistics_t { mesh_statistics };
 } // namespace internal_np
 
 /// \ingroup PkgPointMinkowskiSumNamedParameters
@@ -151,6 +152,15 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<unsigned, internal_np::roadmap_neighbors_t, Named_parameters>
   roadmap_neighbors(unsigned k) const { return {k, *this}; }
 
+  /// point_minkowski_sum_mesh(): fill `s` (a CGAL::Pmsum::Mesh_statistics) with the
+  /// reconstruction's counters, checks and seconds.
+  /// \tparam S `CGAL::Pmsum::Mesh_statistics`
+  /// \param s the statistics to fill
+  /// \returns this chain with the parameter added
+  template <class S>
+  Named_parameters<S*, internal_np::mesh_statistics_t, Named_parameters>
+  mesh_statistics(S& s) const { return {&s, *this}; }
+
 #ifndef DOXYGEN_RUNNING
   // Every CGAL named parameter, returning this class so that ours may follow it.
 #define CGAL_add_named_parameter(X, Y, Z)                                                  \
@@ -227,6 +237,12 @@ maximum_number_of_candidates(std::size_t n)
 /// \copydoc CGAL::Pmsum::Named_parameters::roadmap_neighbors
 inline Pmsum::Named_parameters<unsigned, Pmsum::internal_np::roadmap_neighbors_t>
 roadmap_neighbors(unsigned k) { return Pmsum::Named_parameters<unsigned, Pmsum::internal_np::roadmap_neighbors_t>(k); }
+
+/// \ingroup PkgPointMinkowskiSumNamedParameters
+/// \copydoc CGAL::Pmsum::Named_parameters::mesh_statistics
+template <class S>
+Pmsum::Named_parameters<S*, Pmsum::internal_np::mesh_statistics_t>
+mesh_statistics(S& s) { return Pmsum::Named_parameters<S*, Pmsum::internal_np::mesh_statistics_t>(&s); }
 
 } // namespace parameters
 } // namespace CGAL

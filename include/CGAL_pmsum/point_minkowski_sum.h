@@ -96,6 +96,9 @@ OutputIterator point_minkowski_sum(const PolygonMeshP& P, const PolygonMeshQ& Q,
                                    const NamedParametersP& np_p = parameters::default_values(),
                                    const NamedParametersQ& np_q = parameters::default_values())
 {
+  static_assert(!Pmsum::internal::has_any_parameter<NamedParametersP, Pmsum::internal_np::roadmap_neighbors_t,
+                                                    Pmsum::internal_np::mesh_statistics_t>(),
+                "CGAL_pmsum: roadmap_neighbors and mesh_statistics are not parameters of point_minkowski_sum()");
   Pmsum::Statistics local_stats;
   const Pmsum::internal::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(
     P, Q, d, np_p, np_q, local_stats);

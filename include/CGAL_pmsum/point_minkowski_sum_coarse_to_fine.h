@@ -58,6 +58,9 @@ void point_minkowski_sum_coarse_to_fine(const PolygonMeshP& P, const PolygonMesh
                                         const NamedParametersQ& np_q = parameters::default_values())
 {
   namespace in = Pmsum::internal;
+  static_assert(!in::has_any_parameter<NamedParametersP, Pmsum::internal_np::roadmap_neighbors_t,
+                                       Pmsum::internal_np::mesh_statistics_t>(),
+                "CGAL_pmsum: roadmap_neighbors and mesh_statistics are not parameters of point_minkowski_sum_coarse_to_fine()");
   CGAL_precondition(!ds.empty());
   if (ds.empty()) throw Pmsum::Invalid_input("no covering distance given");
   for (std::size_t k = 0; k < ds.size(); ++k) {

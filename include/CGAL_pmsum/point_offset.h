@@ -164,6 +164,11 @@ OutputIterator point_erosion(const PolygonMesh& P, const StructuringMesh& B, dou
   namespace in = Pmsum::internal;
   static_assert(!in::has_algorithm_parameter<NamedParametersB>(),
                 "CGAL_pmsum: np_b takes only B's vertex_point_map; pass the algorithm's parameters in np_p");
+  static_assert(!in::has_any_parameter<NamedParametersP, Pmsum::internal_np::negate_first_mesh_t,
+                                       Pmsum::internal_np::treat_as_surface_t, Pmsum::internal_np::roadmap_neighbors_t,
+                                       Pmsum::internal_np::mesh_statistics_t>(),
+                "CGAL_pmsum: point_erosion() implies negate_first_mesh and treat_as_surface, and takes no "
+                "roadmap_neighbors or mesh_statistics");
   using GT = typename GetGeomTraits<PolygonMesh, NamedParametersP>::type;
   using Point = typename GT::Point_3;
   Pmsum::Statistics local_stats;

@@ -41,8 +41,9 @@ OutputIterator point_sweep(const PolygonMesh& P, const PointRange& path, double 
                            const NamedParameters& np = parameters::default_values())
 {
   namespace in = Pmsum::internal;
-  static_assert(!in::has_parameter<NamedParameters, Pmsum::internal_np::negate_first_mesh_t>(),
-                "CGAL_pmsum: point_sweep() takes no negate_first_mesh");
+  static_assert(!in::has_any_parameter<NamedParameters, Pmsum::internal_np::negate_first_mesh_t,
+                                       Pmsum::internal_np::roadmap_neighbors_t, Pmsum::internal_np::mesh_statistics_t>(),
+                "CGAL_pmsum: negate_first_mesh, roadmap_neighbors and mesh_statistics are not parameters of point_sweep()");
   using GT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
   Pmsum::Statistics local_stats;
   const in::Sum_settings settings(d, np, local_stats);

@@ -35,6 +35,11 @@ constexpr bool has_parameter()
   return !std::is_same<Found, CGAL::internal_np::Param_not_found>::value;
 }
 
+/// Does NP hold one of the parameters Tags? (Entry points reject those they would ignore.)
+template <class NP, class... Tags>
+constexpr bool has_any_parameter()
+{ return (has_parameter<NP, Tags>() || ...); }
+
 /// Does NP hold a parameter of the algorithm (one that only the first pack, np_p, takes)?
 template <class NP>
 constexpr bool has_algorithm_parameter()
@@ -45,6 +50,7 @@ constexpr bool has_algorithm_parameter()
          has_parameter<NP, internal_np::negate_first_mesh_t>() || has_parameter<NP, internal_np::statistics_t>() ||
          has_parameter<NP, internal_np::maximum_number_of_candidates_t>() ||
          has_parameter<NP, internal_np::check_overlaps_t>() || has_parameter<NP, internal_np::roadmap_neighbors_t>() ||
+         has_parameter<NP, internal_np::mesh_statistics_t>() ||
          has_parameter<NP, CGAL::internal_np::callback_t>();
 }
 
@@ -71,9 +77,10 @@ template <class NP>
 Statistics& statistics_of(const NP& np, Statistics& local)
 {
   auto* s = parameters::choose_parameter(parameters::get_parameter(np, internal_np::statistics), &local);
-  static_assert(std::is_same<decltype(s), Statistics*>::value,
-                "CGAL_pmsum: statistics() takes a CGAL::Pmsum::Statistics");
-  return *s;
+  constexpr bool ok = std::is_same<decltype(s), Statistics*>::value;
+  static_assert(ok, "CGAL_pmsum: statistics() takes a CGAL::Pmsum::Statistics");
+  if constexpr (ok) return *s;
+  else return local; // (only the static_assert's message)
 }
 
 enum class Negation { from_parameters, always };
@@ -117,7 +124,8 @@ struct Sum_settings
 template <class PolygonMeshP, class PolygonMeshQ, class NamedParametersP, class NamedParametersQ>
 struct Prepared_sum : Sum_settings
 {
-  static_assert(!has_algorithm_parameter<NamedParametersQ>(),
+  static_assert(!has_algorithm_parameter<NamedParametersQ>() &&
+                  !has_parameter<NamedParametersQ, CGAL::internal_np::geom_traits_t>(),
                 "CGAL_pmsum: the second pack (np_q) takes only Q's vertex_point_map and treat_as_surface; "
                 "pass the algorithm's parameters in the first pack (np_p)");
   using GT = typename GetGeomTraits<PolygonMeshP, NamedParametersP>::type;

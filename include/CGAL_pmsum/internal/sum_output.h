@@ -99,16 +99,18 @@ auto make_emit(const Mesh_data& mp, const Mesh_data& mq, const Mesh_descriptors<
                const Mesh_descriptors<PolygonMeshQ>& desc_q, bool negate_p, OutputIterator& out)
 {
   using GT = typename Record_traits<Record>::Kernel;
-  static_assert(Accepts_record<OutputIterator, Record>::value || !Record_traits<Written_t<OutputIterator>>::value,
+  constexpr bool records = Accepts_record<OutputIterator, Record>::value;
+  constexpr bool other_records = !records && Record_traits<Written_t<OutputIterator>>::value;
+  static_assert(!other_records,
                 "CGAL_pmsum: the output records must be Minkowski_sum_boundary_point<PolygonMeshP, PolygonMeshQ, K> "
                 "with the meshes' types and K the geometric traits of P (its vertex point map's kernel, or "
                 "geom_traits)");
   return [&mp, &mq, &desc_p, &desc_q, negate_p, &out](const Sample& sp, const Sample& sq, const Direction& direction,
                                                       const Trim* trim) {
-    if constexpr (Accepts_record<OutputIterator, Record>::value) {
+    if constexpr (records) {
       *out++ = Record{output_point<GT>(mp, mq, sp, sq, trim), output_normal<GT>(mp, mq, direction),
                       to_mesh_feature(sp, desc_p, trim, 0), to_mesh_feature(sq, desc_q, trim, 1), negate_p};
-    } else {
+    } else if constexpr (!other_records) { // (else only the static_assert's message)
       *out++ = output_point<GT>(mp, mq, sp, sq, trim);
     }
   };
@@ -118,10 +120,10 @@ auto make_emit(const Mesh_data& mp, const Mesh_data& mq, const Mesh_descriptors<
 template <class GT, class OutputIterator>
 auto make_point_emit(const Mesh_data& mp, const Mesh_data& mq, OutputIterator& out)
 {
-  static_assert(!Record_traits<Written_t<OutputIterator>>::value,
-                "CGAL_pmsum: this entry point writes points (Point_3), not records");
+  constexpr bool records = Record_traits<Written_t<OutputIterator>>::value;
+  static_assert(!records, "CGAL_pmsum: this entry point writes points (Point_3), not records");
   return [&mp, &mq, &out](const Sample& sp, const Sample& sq, const Direction&, const Trim* trim) {
-    *out++ = output_point<GT>(mp, mq, sp, sq, trim);
+    if constexpr (!records) *out++ = output_point<GT>(mp, mq, sp, sq, trim);
   };
 }
 
