@@ -39,6 +39,12 @@
 #include <map>
 #include <vector>
 
+namespace CGAL {
+namespace Pmsum {
+struct Mesh_statistics; // point_minkowski_sum_mesh.h, compiled in mesh.cpp only
+}
+} // namespace CGAL
+
 namespace pmsum_cli {
 
 /// Diagonal of the box a + b (the bounding box of a Minkowski sum); b empty: a's diagonal.
@@ -342,47 +348,38 @@ void with_threads(int threads, F&& f)
   f(CGAL::Sequential_tag());
 }
 
-/// Runs point_minkowski_sum with a progress bar; refuses (exit code 3) a run whose output
-/// would not fit in memory, unless --force.
-/// With --levels, `coarser_level(k, stats, records)` receives each coarser level first.
-inline std::vector<Record> compute_sum(
-  const Sum_input& in, CGAL::Pmsum::Statistics& stats,
-  const std::function<void(std::size_t, const CGAL::Pmsum::Statistics&, std::vector<Record>&&)>& coarser_level = {})
+/// The named parameters of a run from the command line: the filters, the negation, the
+/// statistics, the candidate limit (the memory budget, unless --force) and `callback`.
+/// (--all-candidates is the caller's: the mesh takes no use_covering_net.)
+inline auto sum_parameters(const Sum_input& in, CGAL::Pmsum::Statistics& stats,
+                           const std::function<bool(double)>& callback)
 {
   // Each output point is held in memory before the file is written.
   const std::size_t limit = in.force ? std::size_t(-1) : memory_budget_bytes() / sizeof(Record);
-  std::vector<Record> records;
-  Progress progress(!in.quiet);
-  std::function<bool(double)> callback = [&](double f) { return (!in.callback || in.callback(f)) && progress(f); };
-  const auto np = CGAL::parameters::use_normal_filter(in.normal_filter)
-                    .use_cd_filter(in.cd_filter)
-                    .use_octree_filter(in.octree_filter)
-                    .use_covering_net(in.covering_net)
-                    .use_trim_points(in.trim_points)
-                    .search_islands(in.islands)
-                    .negate_first_mesh(in.negate)
-                    .statistics(stats)
-                    .maximum_number_of_candidates(limit)
-                    .callback(callback);
+  return CGAL::parameters::use_normal_filter(in.normal_filter)
+    .use_cd_filter(in.cd_filter)
+    .use_octree_filter(in.octree_filter)
+    .use_trim_points(in.trim_points)
+    .search_islands(in.islands)
+    .negate_first_mesh(in.negate)
+    .statistics(stats)
+    .maximum_number_of_candidates(limit)
+    .callback(callback);
+}
+
+/// The progress callback of a run: the bar (unless --quiet) and Sum_input::callback.
+inline std::function<bool(double)> progress_callback(const Sum_input& in, Progress& progress)
+{
+  return [&in, &progress](double f) { return (!in.callback || in.callback(f)) && progress(f); };
+}
+
+/// Calls run(tag) with the threads of --threads; a run refused for its size (too many
+/// candidates for the memory) becomes Refused (exit code 3).
+template <class Run>
+void run_refusing_too_large(const Sum_input& in, Run&& run)
+{
   try {
-    with_threads(in.threads, [&](auto tag) {
-      if (in.coarser_d.empty()) {
-        CGAL::point_minkowski_sum<decltype(tag)>(in.P, in.Q, in.d, std::back_inserter(records), np);
-        return;
-      }
-      std::vector<double> ds = in.coarser_d;
-      ds.push_back(in.d);
-      CGAL::point_minkowski_sum_coarse_to_fine<decltype(tag)>(
-        in.P, in.Q, ds,
-        [&](std::size_t k, const CGAL::Pmsum::Statistics& s, std::vector<Record>&& level) {
-          if (k + 1 < ds.size()) {
-            if (coarser_level) coarser_level(k, s, std::move(level));
-          } else {
-            records = std::move(level);
-          }
-        },
-        np);
-    });
+    with_threads(in.threads, run);
   } catch (const CGAL::Pmsum::Too_many_feature_pairs& e) {
     throw Refused(std::string("refused: ") + e.what() + ": more than the memory available allows; use the normal "
                   "filter, or --force");
@@ -393,8 +390,48 @@ inline std::vector<Record> compute_sum(
         << " GiB of output), more than the memory available allows; use a larger -d, or --force";
     throw Refused(msg.str());
   }
+}
+
+/// Runs point_minkowski_sum with a progress bar; refuses (exit code 3) a run whose output
+/// would not fit in memory, unless --force.
+/// With --levels, `coarser_level(k, stats, records)` receives each coarser level first.
+inline std::vector<Record> compute_sum(
+  const Sum_input& in, CGAL::Pmsum::Statistics& stats,
+  const std::function<void(std::size_t, const CGAL::Pmsum::Statistics&, std::vector<Record>&&)>& coarser_level = {})
+{
+  std::vector<Record> records;
+  Progress progress(!in.quiet);
+  const auto np = sum_parameters(in, stats, progress_callback(in, progress)).use_covering_net(in.covering_net);
+  run_refusing_too_large(in, [&](auto tag) {
+    if (in.coarser_d.empty()) {
+      CGAL::point_minkowski_sum<decltype(tag)>(in.P, in.Q, in.d, std::back_inserter(records), np);
+      return;
+    }
+    std::vector<double> ds = in.coarser_d;
+    ds.push_back(in.d);
+    CGAL::point_minkowski_sum_coarse_to_fine<decltype(tag)>(
+      in.P, in.Q, ds,
+      [&](std::size_t k, const CGAL::Pmsum::Statistics& s, std::vector<Record>&& level) {
+        if (k + 1 < ds.size()) {
+          if (coarser_level) coarser_level(k, s, std::move(level));
+        } else {
+          records = std::move(level);
+        }
+      },
+      np);
+  });
   return records;
 }
+
+/// A closed mesh of the boundary (CGAL::point_minkowski_sum_mesh(), mesh.cpp), with a
+/// progress bar; refused as compute_sum() is. Throws Mesh_reconstruction_failed.
+Mesh compute_mesh(const Sum_input& in, CGAL::Pmsum::Mesh_statistics& ms);
+/// The JSON fields of a mesh's sizes and checks (mesh.cpp).
+Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms);
+/// Throws Usage_error unless `path` ends in .off, .obj, .ply or .stl (mesh.cpp).
+void check_mesh_path(const std::string& path);
+/// Writes `mesh` in the format of its extension (mesh.cpp).
+void write_mesh(Output_file& file, const Mesh& mesh);
 
 inline std::vector<Oriented_point> oriented_points(const std::vector<Record>& records)
 {

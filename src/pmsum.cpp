@@ -8,7 +8,9 @@
 //
 // Exit codes: 0 success, 1 error (bad input, I/O), 2 command-line mistake, 3 refused
 // (the run would need more memory than the machine has; --force overrides), 4 validation
-// found a point off the exact boundary or a shell not covered within d, 5 plan found no path.
+// found a point off the exact boundary or a shell not covered within d (or, with --mesh, a
+// mesh that fails a check or is farther than d from the boundary), 5 plan found no path,
+// 6 mesh could make no valid mesh.
 
 #include "cli_common.h"
 #include "shape_presets.h"
@@ -24,6 +26,7 @@
 
 namespace pmsum_cli {
 int command_validate(int argc, char** argv); // validate.cpp
+int command_mesh(int argc, char** argv);     // mesh.cpp
 namespace {
 
 const char* const usage_text =
@@ -32,6 +35,7 @@ const char* const usage_text =
   "commands:\n"
   "  sum P Q -d D -o OUT   points covering the boundary of the Minkowski sum P + Q\n"
   "  validate P Q -d D     the same, checked against CGAL's exact Nef Minkowski sum\n"
+  "  mesh P Q -d D -o OUT  a closed triangle mesh of the boundary of P + Q, vertices on it\n"
   "  offset MESH -r R -d D -o OUT   points covering the offset (or --erode: erosion) of MESH\n"
   "  sweep MESH --path F -d D -o OUT   points covering the volume swept along a polyline\n"
   "  pd P Q -d D --at X Y Z  penetration depth of P translated by (X, Y, Z) into Q\n"
@@ -471,6 +475,7 @@ int main(int argc, char** argv)
     if (command == "--version") { std::cout << "pmsum " << CGAL_PMSUM_VERSION << " (CGAL_pmsum, CGAL " << CGAL_VERSION_STR << ")\n"; return 0; }
     if (command == "sum") return command_sum(argc, argv);
     if (command == "validate") return command_validate(argc, argv);
+    if (command == "mesh") return command_mesh(argc, argv);
     if (command == "generate") return command_generate(argc, argv);
     if (command == "offset") return command_offset(argc, argv);
     if (command == "pd") return command_pd(argc, argv);
@@ -490,6 +495,9 @@ int main(int argc, char** argv)
   } catch (const CGAL::Pmsum::Too_large& e) {
     std::cerr << "pmsum: refused: " << e.what() << " (use a larger -d)\n";
     return 3;
+  } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
+    std::cerr << "pmsum: error: " << e.what() << "\n";
+    return 6;
   } catch (const CGAL::Pmsum::Invalid_input& e) {
     std::cerr << "pmsum: error: " << e.what() << "\n";
     return 1;

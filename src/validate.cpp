@@ -8,6 +8,8 @@
 
 #include <CGAL_pmsum/Nef_minkowski_sum_reference.h>
 #include <CGAL_pmsum/measure_boundary_coverage.h>
+#include <CGAL_pmsum/measure_mesh_distance.h>
+#include <CGAL_pmsum/point_minkowski_sum_mesh.h>
 
 #include <fstream>
 
@@ -23,7 +25,13 @@ const std::string validate_help = std::string(
   "  coverage   per shell of the exact boundary (outer boundaries and voids), the largest\n"
   "             distance from its points (sampled at spacing <= d/8) to the output, / d\n"
   "  times      ours and Nef's, side by side\n"
-  "Exit code 0 if every point is exact and every shell is covered within d, 4 otherwise.\n"
+  "With --mesh, also the mesh of `pmsum mesh` (made by a second run):\n"
+  "  checks     closed, manifold, self-intersection free, bounding a volume; its shells and\n"
+  "             voids against the exact boundary's\n"
+  "  distance   the Hausdorff distance both ways between the mesh and the exact boundary, / d\n"
+  "             (measured at lattice samples of spacing <= d/8 on both)\n"
+  "Exit code 0 if every point is exact and every shell is covered within d (and the mesh is\n"
+  "valid, has the exact boundary's shells and is within d of it both ways), 4 otherwise.\n"
   "\n"
   "  --exact FILE.nef3      read the exact boundary instead of computing it\n"
   "  --save-exact FILE.nef3 save the exact boundary (CGAL's exact Nef format)\n"
@@ -32,17 +40,25 @@ const std::string validate_help = std::string(
   "  --shell-points OUT.xyz write our points as x y z nx ny nz (unit outward normal) and\n"
   "                         the index of the nearest exact shell in a 7th column (to\n"
   "                         colour pictures by shell; readers of .xyz take the first six)\n"
+  "  --mesh                 validate the mesh of the boundary too (see above)\n"
+  "  --save-mesh OUT        with --mesh: write the mesh (.off, .obj, .ply or .stl)\n"
   "  --json FILE            write the report\n") + sum_options_help;
 } // namespace
 
 int command_validate(int argc, char** argv)
 {
   std::vector<std::string> valued = sum_valued;
-  valued.insert(valued.end(), {"--exact", "--save-exact", "--save-exact-off", "--points", "--shell-points", "--json"});
-  const Arguments args(argc, argv, 2, valued, sum_flags);
+  valued.insert(valued.end(), {"--exact", "--save-exact", "--save-exact-off", "--points", "--shell-points", "--json", "--save-mesh"});
+  std::vector<std::string> flags = sum_flags;
+  flags.push_back("--mesh");
+  const Arguments args(argc, argv, 2, valued, flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << validate_help; return 0; }
   std::vector<std::pair<std::string, std::string>> outputs;
-  for (const char* o : {"--points", "--shell-points", "--save-exact", "--save-exact-off", "--json"})
+  if (args.has("--save-mesh") && !args.flag("--mesh")) throw Usage_error("--save-mesh needs --mesh");
+  if (args.flag("--mesh") && args.flag("--all-candidates")) throw Usage_error("--mesh meshes the covering net: not with --all-candidates");
+  if (args.flag("--mesh") && args.has("--levels")) throw Usage_error("--mesh is not available with --levels");
+  if (args.has("--save-mesh")) check_mesh_path(args.values.at("--save-mesh"));
+  for (const char* o : {"--points", "--shell-points", "--save-exact", "--save-exact-off", "--json", "--save-mesh"})
     if (args.has(o)) outputs.push_back({o, args.values.at(o)});
   if (args.has("--points")) {
     const std::string e = extension(args.values.at("--points"));
@@ -141,7 +157,30 @@ int command_validate(int argc, char** argv)
     voids += c.is_void;
     worst = (std::max)(worst, c.worst_distance / in.d);
   }
-  const bool ok = off_boundary == 0 && covered == coverage.size();
+
+  // The mesh (--mesh): made by a second run, checked, and measured against the exact boundary.
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::Pmsum::Mesh_distance distance;
+  std::string mesh_error;
+  double mesh_seconds = 0, distance_seconds = 0;
+  bool mesh_ok = true;
+  if (args.flag("--mesh")) {
+    const auto t_mesh = std::chrono::steady_clock::now();
+    try {
+      const Mesh mesh = compute_mesh(in, ms);
+      mesh_seconds = seconds_since(t_mesh);
+      if (args.has("--save-mesh")) write_mesh(files["--save-mesh"], mesh);
+      const auto t_distance = std::chrono::steady_clock::now();
+      distance = CGAL::Pmsum::measure_mesh_distance(shells, mesh, in.d / 8);
+      distance_seconds = seconds_since(t_distance);
+    } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
+      mesh_seconds = seconds_since(t_mesh);
+      mesh_error = e.what();
+    }
+    mesh_ok = mesh_error.empty() && ms.checks.valid() && ms.checks.shells == coverage.size() &&
+              ms.checks.void_shells == voids && distance.mesh_to_surface < in.d && distance.surface_to_mesh < in.d;
+  }
+  const bool ok = off_boundary == 0 && covered == coverage.size() && mesh_ok;
 
   std::cout << std::setprecision(4) << "pmsum validate: " << in.p_path << " + " << in.q_path << (in.negate ? " (negated P)" : "")
             << ", d = " << in.d << "\n"
@@ -155,6 +194,21 @@ int command_validate(int argc, char** argv)
     std::cout << "    shell " << i << (coverage[i].is_void ? " (void) " : " (outer) ") << coverage[i].triangles
               << " triangles: worst " << coverage[i].worst_distance / in.d << " d, "
               << coverage[i].touched << "/" << coverage[i].samples << " samples within d\n";
+  if (args.flag("--mesh")) {
+    const CGAL::Pmsum::Mesh_checks& c = ms.checks;
+    if (!mesh_error.empty())
+      std::cout << "  mesh              " << mesh_error << "\n";
+    else
+      std::cout << "  mesh              " << ms.vertices << " vertices, " << ms.triangles << " triangles (d = "
+                << ms.covering_distance << ", " << ms.refinements << " refinements)\n"
+                << "  mesh checks       " << (c.valid() ? "closed, manifold, self-intersection free, bounding a volume" : c.failures())
+                << "; " << c.shells << " shells (" << c.void_shells << " voids), exact: " << coverage.size() << " ("
+                << voids << ")\n"
+                << "  mesh distance     mesh to exact " << distance.mesh_to_surface / in.d << " d, exact to mesh "
+                << distance.surface_to_mesh / in.d << " d\n";
+    std::cout << "  mesh seconds      " << mesh_seconds << " (sum " << ms.seconds_sum << ", reconstruction "
+              << ms.seconds_mesh << "), Nef ratio " << (mesh_seconds > 0 ? ref->seconds() / mesh_seconds : 0) << "\n";
+  }
   std::cout << "  seconds           ours " << ours_seconds << ", Nef " << ref->seconds()
             << (args.has("--exact") ? " (read from file)" : "") << ", ratio "
             << (ours_seconds > 0 && ref->seconds() > 0 ? ref->seconds() / ours_seconds : 0) << "\n"
@@ -173,7 +227,18 @@ int command_validate(int argc, char** argv)
     }
     arr += "]";
     Json seconds;
-    seconds.num("ours", ours_seconds).num("nef", ref->seconds()).num("checks", check_seconds).num("total", seconds_since(t_start));
+    seconds.num("ours", ours_seconds).num("nef", ref->seconds()).num("checks", check_seconds);
+    if (args.flag("--mesh")) {
+      Json m = mesh_summary(ms);
+      m.boolean("made", mesh_error.empty()).str("error", mesh_error)
+        .num("mesh_to_exact_over_d", distance.mesh_to_surface / in.d)
+        .num("exact_to_mesh_over_d", distance.surface_to_mesh / in.d).integer("mesh_samples", distance.mesh_samples)
+        .integer("exact_samples", distance.surface_samples).boolean("ok", mesh_ok);
+      j.object("mesh", m);
+      seconds.num("mesh", mesh_seconds).num("mesh_sum", ms.seconds_sum).num("mesh_reconstruction", ms.seconds_mesh)
+        .num("mesh_distance", distance_seconds);
+    }
+    seconds.num("total", seconds_since(t_start));
     j.str("command", "validate").integer("exactness_failures", off_boundary)
       .integer("shells", coverage.size()).integer("void_shells", voids).integer("shells_covered", covered)
       .num("worst_coverage_over_d", worst)

@@ -297,6 +297,29 @@ expect_fail 2 "name the same file"           -- sum "$cube" "$tet" -d 0.2 -o "$w
 for f in tet.ply pocket.off path.txt cube.off; do cmp -s "$work/$f" "$work/$f.copy" && ok || ko "input $f was changed"; done
 [ -L "$work/tet_link.ply" ] && ok || ko "the symbolic link to an input was replaced"
 # Every output path is checked before the work: nothing is computed, nothing left behind.
+# mesh: a closed mesh in every format; its OFF has the JSON's vertex and triangle counts, and
+# every edge of it is on exactly two triangles (closed, manifold)
+"$pmsum" mesh "$cube" "$tet" -d 0.2 -o "$work/m.off" --json "$work/m.json" --quiet
+if [ $? = 0 ] && grep -q '"closed": true' "$work/m.json" && grep -q '"self_intersection_free": true' "$work/m.json" \
+   && grep -q '"shells": 1,' "$work/m.json" && grep -q '"reconstruction"' "$work/m.json"; then ok; else ko "mesh"; cat "$work/m.json"; fi
+if awk 'NR == 2 { nv = $1; nf = $2 } NR > 2 + nv && NF == 4 { f++; for (i = 2; i <= 4; i++) { a = $i; b = $(i % 3 + 2);
+        e[a < b ? a " " b : b " " a]++ } }
+        END { for (k in e) if (e[k] != 2) bad = 1; exit bad || f != nf || f < 100 }' "$work/m.off" \
+   && grep -q "\"triangles\": $(sed -n 2p "$work/m.off" | cut -d' ' -f2)," "$work/m.json"; then ok; else ko "mesh OFF: not closed or counts"; fi
+for e in ply obj stl; do "$pmsum" mesh "$cube" "$tet" -d 0.2 -o "$work/m.$e" --quiet && [ -s "$work/m.$e" ] && ok || ko "mesh .$e"; done
+# validate --mesh: checks, shells and the distance to the exact boundary, both ways
+"$pmsum" validate "$cube" "$tet" -d 0.2 --quiet --mesh --save-mesh "$work/vm.off" \
+  --json "$work/vm.json" > "$work/vm.txt"
+if [ $? = 0 ] && grep -q "mesh checks       closed, manifold" "$work/vm.txt" && grep -q "1 shells (0 voids), exact: 1 (0)" "$work/vm.txt" \
+   && grep -q '"mesh_to_exact_over_d": 0\.' "$work/vm.json" && grep -q '"exact_to_mesh_over_d": 0\.' "$work/vm.json" \
+   && [ -s "$work/vm.off" ]; then ok; else ko "validate --mesh"; cat "$work/vm.txt"; fi
+expect_fail 2 ".off, .obj, .ply or .stl" -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.xyz"
+expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --all-candidates
+expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
+expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
+# a slab thinner than the points' spacing even after two refinements: an error, no file
+printf 'OFF\n8 12 0\n0 0 0\n0 0 0.01\n0 2 0\n0 2 0.01\n2 0 0\n2 0 0.01\n2 2 0\n2 2 0.01\n3 0 1 3\n3 0 3 2\n3 4 6 7\n3 4 7 5\n3 0 4 5\n3 0 5 1\n3 2 3 7\n3 2 7 6\n3 0 2 6\n3 0 6 4\n3 1 5 7\n3 1 7 3\n' > "$work/slab.off"
+expect_fail 6 "no valid mesh"            -- mesh "$work/slab.off" "$tet" --scale-q 0.01 -d 0.5 -o "$work/out.off" --quiet
 expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 -o "$work/missing/out.ply"
 expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --json "$work/missing/out.json"
 expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 --levels 0.4 -o "$work/missing/out.ply"

@@ -87,6 +87,15 @@ public:
   Operation_cancelled() : std::runtime_error("point_minkowski_sum was cancelled by its callback") {}
 };
 
+/// \ingroup PkgPointMinkowskiSumMesh
+/// point_minkowski_sum_mesh() could make no valid mesh from the points, even with the smaller
+/// covering distances it tried. Constructed from its message, as `std::runtime_error`.
+class Mesh_reconstruction_failed : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
 } // namespace Pmsum
 } // namespace CGAL
 

@@ -62,6 +62,22 @@ struct Point_search
     tree.insert(points.begin(), points.end());
   }
 };
+
+/// Calls visit(x) on the points of the closed lattice of spacing at most `spacing` on the
+/// triangle `t` of shell `s` (its vertices and edges included).
+template <class Visit>
+void for_each_lattice_point(const Shell& s, const std::array<std::size_t, 3>& t, double spacing, Visit&& visit)
+{
+  using K = Point_search::K;
+  const K::Point_3 a(s.points[t[0]][0], s.points[t[0]][1], s.points[t[0]][2]);
+  const K::Point_3 b(s.points[t[1]][0], s.points[t[1]][1], s.points[t[1]][2]);
+  const K::Point_3 e(s.points[t[2]][0], s.points[t[2]][1], s.points[t[2]][2]);
+  const double longest = std::sqrt((std::max)({CGAL::squared_distance(a, b), CGAL::squared_distance(b, e),
+                                               CGAL::squared_distance(e, a)}));
+  const int n = (std::max)(1, int(std::ceil(longest / spacing)));
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) visit(a + (double(i) / n) * (b - a) + (double(j) / n) * (e - a));
+}
 } // namespace internal
 
 /// \ingroup PkgPointMinkowskiSumCoverage
@@ -107,17 +123,7 @@ std::vector<Shell_coverage> measure_boundary_coverage(const std::vector<Shell>& 
       c.worst_distance = (std::max)(c.worst_distance, dist);
       c.touched += (dist < d);
     };
-    for (const auto& t : s.triangles) {
-      const K::Point_3 a(s.points[t[0]][0], s.points[t[0]][1], s.points[t[0]][2]);
-      const K::Point_3 b(s.points[t[1]][0], s.points[t[1]][1], s.points[t[1]][2]);
-      const K::Point_3 e(s.points[t[2]][0], s.points[t[2]][1], s.points[t[2]][2]);
-      const double longest = std::sqrt((std::max)({CGAL::squared_distance(a, b), CGAL::squared_distance(b, e),
-                                                   CGAL::squared_distance(e, a)}));
-      const int n = (std::max)(1, int(std::ceil(longest / spacing)));
-      for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j)
-          visit(a + (double(i) / n) * (b - a) + (double(j) / n) * (e - a));
-    }
+    for (const auto& t : s.triangles) internal::for_each_lattice_point(s, t, spacing, visit);
     out.push_back(c);
   }
   return out;

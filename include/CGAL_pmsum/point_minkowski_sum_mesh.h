@@ -4,52 +4,23 @@
 // CGAL::point_minkowski_sum_mesh(): a closed, 2-manifold, outward-oriented triangle mesh of
 // the boundary of P + Q without self-intersections, whose vertices are output points of
 // point_minkowski_sum() (each exactly on the boundary). The points (the default (d/2, d)-net)
-// are joined by CGAL's advancing-front surface reconstruction; the result is checked, and if a
-// check fails the sum is recomputed with a smaller covering distance. A mesh that fails every
+// are joined by CGAL's advancing-front surface reconstruction, chosen and repaired with the
+// points' normals (internal/mesh_reconstruction.h); the result is checked (check_mesh.h), and if
+// a check fails the sum is recomputed with a smaller covering distance. A mesh that fails every
 // check is never returned: Mesh_reconstruction_failed is thrown instead.
 
 #ifndef CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
 #define CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
 
+#include <CGAL_pmsum/check_mesh.h>
+#include <CGAL_pmsum/internal/mesh_reconstruction.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
-#include <CGAL/Advancing_front_surface_reconstruction.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-
-#include <array>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Pmsum {
-
-/// \ingroup PkgPointMinkowskiSumMesh
-/// No valid mesh could be made from the points, even with the smaller covering distances
-/// tried. Constructed from its message, as `std::runtime_error`.
-class Mesh_reconstruction_failed : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
-
-/// \ingroup PkgPointMinkowskiSumMesh
-/// What check_mesh() found in a triangle mesh.
-struct Mesh_checks
-{
-  bool closed = false;                 ///< no border edge
-  bool manifold = false;               ///< every edge on two faces, every vertex a disk (a valid halfedge mesh)
-  bool self_intersection_free = false; ///< `CGAL::Polygon_mesh_processing::does_self_intersect()` is false
-  bool bounds_a_volume = false;        ///< outer shells oriented outward, voids inward
-  std::size_t shells = 0;              ///< connected components
-  std::size_t void_shells = 0;         ///< of them, boundaries of voids (inside an odd number of others)
-
-  /// \returns whether the mesh is closed, manifold, free of self-intersections and bounds a volume
-  bool valid() const { return closed && manifold && self_intersection_free && bounds_a_volume; }
-};
 
 /// \ingroup PkgPointMinkowskiSumMesh
 /// Counters and seconds of point_minkowski_sum_mesh().
@@ -65,71 +36,6 @@ struct Mesh_statistics
   double seconds_mesh = 0;     ///< all reconstructions and checks
 };
 
-/// \ingroup PkgPointMinkowskiSumMesh
-/// Checks a triangle mesh: closed, manifold, free of self-intersections, bounding a volume
-/// (CGAL::Polygon_mesh_processing), and counts its shells and voids.
-/// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex point map
-/// \param mesh the mesh to check
-/// \returns what was found; `bounds_a_volume`, `shells` and `void_shells` only for a closed
-///          manifold mesh without self-intersections
-template <class TriangleMesh>
-Mesh_checks check_mesh(const TriangleMesh& mesh)
-{
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  Mesh_checks c;
-  c.closed = CGAL::is_closed(mesh);
-  c.manifold = CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_triangle_mesh(mesh);
-  if (!c.closed || !c.manifold) return c;
-  c.self_intersection_free = !PMP::does_self_intersect(mesh);
-  if (!c.self_intersection_free) return c;
-  auto volume_id = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  std::vector<std::size_t> nesting;
-  std::vector<bool> outward;
-  PMP::volume_connected_components(mesh, volume_id,
-                                   CGAL::parameters::nesting_levels(std::ref(nesting))
-                                     .is_cc_outward_oriented(std::ref(outward)));
-  c.shells = nesting.size();
-  c.bounds_a_volume = true;
-  for (std::size_t i = 0; i < nesting.size(); ++i) {
-    const bool is_void = nesting[i] % 2 == 1;
-    c.void_shells += is_void;
-    c.bounds_a_volume = c.bounds_a_volume && outward[i] != is_void;
-  }
-  return c;
-}
-
-namespace internal {
-
-/// Joins `points` (with their positions in double) by advancing-front reconstruction into
-/// `mesh`, oriented to bound a volume. Returns the checks of the mesh made.
-template <class TriangleMesh, class Point>
-Mesh_checks reconstruct_mesh(const std::vector<Point>& points, TriangleMesh& mesh)
-{
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  std::vector<Epick::Point_3> positions;
-  positions.reserve(points.size());
-  for (const Point& p : points)
-    positions.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  std::vector<std::array<std::size_t, 3>> triangles;
-  CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles));
-  std::vector<std::vector<std::size_t>> polygons;
-  polygons.reserve(triangles.size());
-  for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
-  std::vector<Point> soup_points(points); // orient_polygon_soup may duplicate non-manifold vertices
-  clear(mesh);
-  if (!PMP::orient_polygon_soup(soup_points, polygons) || !PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    return Mesh_checks{}; // not orientable, or not a manifold mesh
-  PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, mesh);
-  Mesh_checks c = check_mesh(mesh);
-  if (c.closed && c.manifold && c.self_intersection_free && !c.bounds_a_volume) {
-    PMP::orient_to_bound_a_volume(mesh);
-    c = check_mesh(mesh);
-  }
-  return c;
-}
-
-} // namespace internal
 } // namespace Pmsum
 
 /// \ingroup PkgPointMinkowskiSumMesh
@@ -141,8 +47,9 @@ Mesh_checks reconstruct_mesh(const std::vector<Point>& points, TriangleMesh& mes
 /// check, the sum is recomputed at `d/2`, then `d/4`; if that fails too,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
-/// What is measured, not proved: the distance from the mesh to the exact boundary and back
-/// (`pmsum validate --mesh`; below `d` both ways on the validation suite).
+/// What is measured, not proved: the distance from the mesh to the exact boundary and back,
+/// and its shells against the exact boundary's (`pmsum validate --mesh`,
+/// `benchmark/mesh/results/results.md`).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \tparam PolygonMeshP, PolygonMeshQ models of `FaceListGraph`
@@ -176,22 +83,40 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
   Pmsum::Mesh_statistics& ms =
     *parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::mesh_statistics), &local);
   ms = Pmsum::Mesh_statistics();
-  using GT = typename GetGeomTraits<PolygonMeshP, NamedParametersP>::type;
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   const int max_refinements = 2;
+  // One input stage and one pipeline for every level: a refinement reuses the coarser
+  // level's decisions (coarse to fine, as point_minkowski_sum_coarse_to_fine()).
+  const auto t_input = in::Clock::now();
+  Pmsum::Statistics local_stats;
+  const in::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(P, Q, d, np_p, np_q,
+                                                                                            local_stats);
+  using Record = typename decltype(sum)::Record;
+  in::Pipeline<ConcurrencyTag> pipeline(sum.mp, sum.mq, sum.options, /*coarse_to_fine=*/true);
+  ms.seconds_sum += in::seconds_since(t_input);
+  in::Clock::time_point start = sum.start;
   for (int level = 0; level <= max_refinements; ++level) {
     const double dl = d / double(1 << level);
     const auto t_sum = in::Clock::now();
-    std::vector<typename GT::Point_3> sum_points;
-    auto out = std::back_inserter(sum_points);
-    Pmsum::Statistics local_stats;
-    in::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(P, Q, dl, np_p, np_q,
-                                                                                      local_stats);
-    in::run_pipeline<ConcurrencyTag>(sum.mp, sum.mq, dl, sum.options, sum.stats, sum.make_emit(out), sum.start);
+    std::vector<Record> records;
+    auto out = std::back_inserter(records);
+    sum.stats = Pmsum::Statistics();
+    pipeline.run_level(dl, sum.stats, sum.make_emit(out), start);
+    start = in::Clock::now();
     ms.sum = sum.stats;
-    const std::vector<Point> points(sum_points.begin(), sum_points.end());
+    std::vector<Point> points;
+    std::vector<Epick::Vector_3> normals;
+    points.reserve(records.size());
+    normals.reserve(records.size());
+    for (const Record& r : records) {
+      points.emplace_back(r.point);
+      // On a convolution edge or vertex the normal is one of several: none is given.
+      if (r.origin_p.dimension + r.origin_q.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
+      else normals.emplace_back(CGAL::to_double(r.normal.x()), CGAL::to_double(r.normal.y()), CGAL::to_double(r.normal.z()));
+    }
     ms.seconds_sum += in::seconds_since(t_sum);
     const auto t_mesh = in::Clock::now();
-    ms.checks = in::reconstruct_mesh(points, mesh);
+    ms.checks = in::reconstruct_mesh<ConcurrencyTag>(points, normals, dl, mesh);
     ms.seconds_mesh += in::seconds_since(t_mesh);
     ms.covering_distance = dl;
     ms.refinements = level;
@@ -202,12 +127,10 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
     }
   }
   clear(mesh);
-  const Pmsum::Mesh_checks& c = ms.checks;
-  throw Pmsum::Mesh_reconstruction_failed(
-    std::string("no valid mesh of the sum's boundary could be made (down to d = ") + std::to_string(d / 4) +
-    "): the last reconstruction was " + (c.closed ? "" : "not closed, ") + (c.manifold ? "" : "not manifold, ") +
-    (c.closed && c.manifold && !c.self_intersection_free ? "self-intersecting, " : "") +
-    (c.self_intersection_free && !c.bounds_a_volume ? "not bounding a volume, " : "") + "so none is returned");
+  throw Pmsum::Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " +
+                                          std::to_string(d) + " down to " + std::to_string(ms.covering_distance) +
+                                          "): the last reconstruction was " + ms.checks.failures() +
+                                          ", so none is returned");
 }
 
 } // namespace CGAL

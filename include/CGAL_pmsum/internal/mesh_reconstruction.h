@@ -1,0 +1,173 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The mesh stage of point_minkowski_sum_mesh(): output points with their outward normals are
+// joined into triangles by CGAL's advancing-front surface reconstruction, the triangles
+// made into an oriented halfedge mesh, and the mesh checked (check_mesh.h).
+//
+// The normals choose among the reconstruction's candidate triangles: a triangle is refused
+// when it makes more than 80 degrees with the outward normal of one of its vertices (oriented
+// by the sum of the three). Such a triangle joins the two sides of a thin part or of a narrow
+// passage, or the outside of a shell to a void: points close together on surfaces that face
+// away from each other. The normal of a point inside a convolution facet is the facet's; on a
+// convolution edge or vertex (a possible crease or corner) it is not unique and not used.
+// The reconstruction leaves holes at sharp corners, and along the rims of parts thinner than
+// about three times the point spacing: they are closed by triangulating each hole's border.
+// Where a filled hole crosses the triangles beside it, those are cut away with their
+// neighbourhood and the hole filled again. Where the result still fails a check,
+// point_minkowski_sum_mesh() refines.
+
+#ifndef CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
+#define CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
+
+#include <CGAL_pmsum/check_mesh.h>
+
+#include <CGAL/Advancing_front_surface_reconstruction.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <array>
+#include <set>
+#include <utility>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// Priority of the advancing front: CGAL's default (the radius of the smallest Delaunay
+/// sphere through the triangle), but infinity (refused) for a triangle that makes an angle of
+/// more than 80 degrees with a vertex normal (the triangle oriented by the sum of its vertex
+/// normals). A zero normal (a point on a crease or a corner, where the normal is not unique)
+/// accepts any triangle.
+struct Normal_consistent_priority
+{
+  using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
+  const std::vector<Vector>* normals;
+
+  template <class AdvancingFront, class Cell_handle>
+  double operator()(const AdvancingFront& adv, Cell_handle& c, const int& index) const
+  {
+    const double cos_max_angle = 0.17364817766693; // cos(80 degrees)
+    std::array<Vector, 3> n;
+    std::array<typename Cell_handle::value_type::Vertex_handle, 3> v;
+    for (int k = 0; k < 3; ++k) {
+      v[k] = c->vertex((index + k + 1) & 3);
+      n[k] = (*normals)[v[k]->id()];
+    }
+    Vector t = CGAL::cross_product(v[1]->point() - v[0]->point(), v[2]->point() - v[0]->point());
+    if (t * (n[0] + n[1] + n[2]) < 0) t = -t;
+    const double length = std::sqrt(t.squared_length());
+    for (const Vector& nk : n)
+      if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return std::numeric_limits<double>::infinity();
+    return adv.smallest_radius_delaunay_sphere(c, index);
+  }
+};
+
+/// Closes the holes the reconstruction leaves (at sharp corners and along the rims of thin
+/// parts) with triangles between the points of each hole's border (CGAL's triangulate_hole:
+/// no new vertex). A hole is left open if its border has more than 300 edges, or if a triangle
+/// of its filling has an edge longer than `longest_edge` (3 d: it would cut across the shape).
+/// Whether the result is valid is for check_mesh() to say.
+template <class TriangleMesh>
+void fill_holes(TriangleMesh& mesh, double longest_edge)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  auto too_long = [&](halfedge_descriptor h) {
+    return CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)))) >
+           longest_edge * longest_edge;
+  };
+  std::vector<halfedge_descriptor> borders;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(borders));
+  for (halfedge_descriptor h : borders) {
+    std::size_t size = 0;
+    for (halfedge_descriptor b : CGAL::halfedges_around_face(h, mesh)) size += (void(b), 1);
+    if (size > 300) continue;
+    std::vector<face_descriptor> added;
+    PMP::triangulate_hole(mesh, h, std::back_inserter(added));
+    bool cuts = false;
+    for (face_descriptor f : added)
+      for (halfedge_descriptor e : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) cuts = cuts || too_long(e);
+    if (cuts)
+      for (face_descriptor f : added) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+  }
+}
+
+/// Removes the faces of `mesh` that intersect another one, with `rings` rings of faces around
+/// them (the faces around their vertices, repeatedly), leaving holes for fill_holes().
+/// Returns whether a face intersected another.
+template <class ConcurrencyTag, class TriangleMesh>
+bool cut_self_intersections(TriangleMesh& mesh, int rings)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(mesh, std::back_inserter(pairs));
+  if (pairs.empty()) return false;
+  std::set<face_descriptor> cut;
+  for (const auto& fg : pairs) cut.insert({fg.first, fg.second});
+  for (int r = 0; r < rings; ++r) {
+    std::set<face_descriptor> grown = cut;
+    for (face_descriptor f : cut)
+      for (auto v : vertices_around_face(halfedge(f, mesh), mesh))
+        for (face_descriptor g : faces_around_target(halfedge(v, mesh), mesh))
+          if (g != boost::graph_traits<TriangleMesh>::null_face()) grown.insert(g);
+    cut.swap(grown);
+  }
+  for (face_descriptor f : cut) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+  return true;
+}
+
+/// Joins `points` (exact or not; reconstructed from their double values; a d-covering) with
+/// their unit outward `normals` into `mesh`, oriented to bound a volume. Returns the mesh's checks; the
+/// mesh is left empty if the triangles do not form an oriented manifold.
+template <class ConcurrencyTag, class TriangleMesh, class Point>
+Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
+                             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+                             double d, TriangleMesh& mesh)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<Epick::Point_3> positions;
+  positions.reserve(points.size());
+  for (const Point& p : points)
+    positions.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  std::vector<std::array<std::size_t, 3>> triangles;
+  CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
+                                               Normal_consistent_priority{&normals});
+  std::vector<std::vector<std::size_t>> polygons;
+  polygons.reserve(triangles.size());
+  for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
+  std::vector<Point> soup_points(points); // orient_polygon_soup may duplicate non-manifold vertices
+  clear(mesh);
+  if (!PMP::orient_polygon_soup(soup_points, polygons) || !PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    return Mesh_checks{}; // not orientable, or not a manifold mesh
+  PMP::remove_isolated_points_in_polygon_soup(soup_points, polygons); // points the reconstruction left out
+  PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, mesh);
+  fill_holes(mesh, 3 * d);
+  // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),
+  // cut the crossing triangles with a growing neighbourhood and fill again.
+  for (int rings = 1; rings <= 3 && cut_self_intersections<ConcurrencyTag>(mesh, rings); ++rings)
+    fill_holes(mesh, 3 * d);
+  Mesh_checks c = check_mesh<ConcurrencyTag>(mesh);
+  if (c.self_intersection_free && !c.bounds_a_volume) {
+    PMP::orient_to_bound_a_volume(mesh);
+    check_shells(mesh, c); // reorienting changes no position: the other checks stand
+  }
+  return c;
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H

@@ -1,0 +1,114 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// CGAL::Pmsum::measure_mesh_distance(): the distance between a triangle mesh and a surface
+// made of shells (e.g. the exact boundary of a Minkowski sum), both ways, measured at lattice
+// samples of both. What `pmsum validate --mesh` reports for point_minkowski_sum_mesh().
+
+#ifndef CGAL_PMSUM_MEASURE_MESH_DISTANCE_H
+#define CGAL_PMSUM_MEASURE_MESH_DISTANCE_H
+
+#include <CGAL_pmsum/measure_boundary_coverage.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// The distances measured by measure_mesh_distance().
+struct Mesh_distance
+{
+  double mesh_to_surface = 0;       ///< largest distance from a sample of the mesh to the surface
+  double surface_to_mesh = 0;       ///< largest distance from a sample of the surface to the mesh
+  std::size_t mesh_samples = 0;     ///< samples of the mesh
+  std::size_t surface_samples = 0;  ///< samples of the surface
+};
+
+namespace internal {
+
+/// The largest distance from the lattice samples of `from` to the triangles of `to`;
+/// `samples` counts the samples.
+inline double largest_distance(const std::vector<Shell>& from, const std::vector<Shell>& to, double spacing,
+                               std::size_t& samples)
+{
+  using K = Point_search::K;
+  using Triangles = std::vector<K::Triangle_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+  Triangles triangles;
+  for (const Shell& s : to)
+    for (const auto& t : s.triangles) {
+      auto p = [&](int i) { return K::Point_3(s.points[t[i]][0], s.points[t[i]][1], s.points[t[i]][2]); };
+      triangles.emplace_back(p(0), p(1), p(2));
+    }
+  if (triangles.empty()) return std::numeric_limits<double>::infinity();
+  Tree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  double worst = 0;
+  samples = 0;
+  for (const Shell& s : from)
+    for (const auto& t : s.triangles)
+      for_each_lattice_point(s, t, spacing, [&](const K::Point_3& x) {
+        ++samples;
+        worst = (std::max)(worst, tree.squared_distance(x));
+      });
+  return std::sqrt(worst);
+}
+
+/// A triangle mesh as one shell (positions rounded to double).
+template <class TriangleMesh>
+Shell to_shell(const TriangleMesh& mesh)
+{
+  Shell s;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+  for (auto v : vertices(mesh)) {
+    put(index, v, s.points.size());
+    const auto& p = get(vpm, v);
+    s.points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+  }
+  for (auto f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    s.triangles.push_back({get(index, source(h, mesh)), get(index, target(h, mesh)),
+                           get(index, target(next(h, mesh), mesh))});
+  }
+  return s;
+}
+
+} // namespace internal
+
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// Measures the distance between a triangle mesh and a surface in both directions (the two
+/// one-sided Hausdorff distances): the largest distance from a sample of one to the other's
+/// triangles, sampling the triangles of each with the closed lattice of spacing at most
+/// `spacing` (as measure_boundary_coverage()).
+///
+/// Measured at the samples only: each true one-sided distance may exceed the measured one by
+/// less than `spacing`.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex point map
+/// \param shells the surface, e.g. Nef_minkowski_sum_reference::shells()
+/// \param mesh the triangle mesh, e.g. of point_minkowski_sum_mesh()
+/// \param spacing the largest spacing of the samples on each triangle
+/// \returns both distances (infinity if the mesh or the surface is empty)
+/// \pre `spacing > 0`, `mesh` is a triangle mesh
+template <class TriangleMesh>
+Mesh_distance measure_mesh_distance(const std::vector<Shell>& shells, const TriangleMesh& mesh, double spacing)
+{
+  CGAL_precondition(spacing > 0);
+  const std::vector<Shell> mesh_shell = {internal::to_shell(mesh)};
+  Mesh_distance m;
+  m.mesh_to_surface = internal::largest_distance(mesh_shell, shells, spacing, m.mesh_samples);
+  m.surface_to_mesh = internal::largest_distance(shells, mesh_shell, spacing, m.surface_samples);
+  return m;
+}
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_MEASURE_MESH_DISTANCE_H

@@ -1,0 +1,118 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// pmsum mesh: a closed, manifold, outward-oriented triangle mesh of the boundary of P + Q
+// without self-intersections (CGAL::point_minkowski_sum_mesh()). Its own translation unit:
+// the only one of the tool that compiles the surface reconstruction and the mesh checks.
+
+#include "cli_common.h"
+
+#include <CGAL_pmsum/point_minkowski_sum_mesh.h>
+
+#include <CGAL/boost/graph/IO/OBJ.h>
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/IO/PLY.h>
+#include <CGAL/boost/graph/IO/STL.h>
+
+namespace pmsum_cli {
+
+Mesh compute_mesh(const Sum_input& in, CGAL::Pmsum::Mesh_statistics& ms)
+{
+  Mesh mesh;
+  Progress progress(!in.quiet);
+  CGAL::Pmsum::Statistics stats;
+  const auto np = sum_parameters(in, stats, progress_callback(in, progress)).mesh_statistics(ms);
+  run_refusing_too_large(in, [&](auto tag) { CGAL::point_minkowski_sum_mesh<decltype(tag)>(in.P, in.Q, in.d, mesh, np); });
+  return mesh;
+}
+
+Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
+{
+  const CGAL::Pmsum::Mesh_checks& c = ms.checks;
+  Json j;
+  j.integer("vertices", ms.vertices).integer("triangles", ms.triangles).num("covering_distance", ms.covering_distance)
+    .integer("refinements", std::size_t(ms.refinements)).boolean("closed", c.closed).boolean("manifold", c.manifold)
+    .boolean("self_intersection_free", c.self_intersection_free).boolean("bounds_a_volume", c.bounds_a_volume)
+    .integer("shells", c.shells).integer("void_shells", c.void_shells);
+  return j;
+}
+
+void check_mesh_path(const std::string& path)
+{
+  const std::string e = extension(path);
+  if (e != "off" && e != "ply" && e != "obj" && e != "stl") throw Usage_error("'" + path + "': a mesh must be written to a .off, .obj, .ply or .stl file");
+}
+
+
+void write_mesh(Output_file& file, const Mesh& mesh)
+{
+  const std::string e = extension(file.path());
+  const auto np = CGAL::parameters::stream_precision(17);
+  bool ok = false;
+  auto write = [&](std::ostream& os) {
+    if (e == "off") ok = CGAL::IO::write_OFF(os, mesh, np);
+    if (e == "obj") ok = CGAL::IO::write_OBJ(os, mesh, np);
+    if (e == "ply") ok = CGAL::IO::write_PLY(os, mesh, np.use_binary_mode(true));
+    if (e == "stl") ok = CGAL::IO::write_STL(os, mesh, np.use_binary_mode(true));
+  };
+  file.write(write, e == "ply" || e == "stl" ? std::ios::out | std::ios::binary : std::ios::out);
+  if (!ok) throw Error("cannot write the mesh to '" + file.path() + "'");
+}
+
+namespace {
+
+const std::string mesh_help = std::string(
+  "usage: pmsum mesh P Q -d D -o OUT [options]\n"
+  "\n"
+  "Writes a triangle mesh of the boundary of the Minkowski sum P + Q: closed, 2-manifold,\n"
+  "oriented outward (voids inward), without self-intersections, one shell per shell of the\n"
+  "boundary. Its vertices are output points of `pmsum sum` (on the exact boundary, covering it\n"
+  "within D). If the mesh made at D fails a check, the sum is recomputed at D/2, then D/4;\n"
+  "if no valid mesh is made, nothing is written and the exit code is 6.\n"
+  "\n"
+  "  -o OUT                 .off, .obj (17 digits), .ply (binary doubles) or .stl (binary:\n"
+  "                         coordinates rounded to float)\n"
+  "  --json FILE            write a summary: the mesh's checks and sizes, the d used, seconds\n"
+  "                         of the sum and of the reconstruction\n") + sum_options_help;
+
+} // namespace
+
+int command_mesh(int argc, char** argv)
+{
+  std::vector<std::string> valued = {"-d", "--scale-q", "--threads", "-o", "--json"};
+  std::vector<std::string> flags = sum_flags;
+  flags.erase(std::remove(flags.begin(), flags.end(), "--all-candidates"), flags.end());
+  const Arguments args(argc, argv, 2, valued, flags);
+  if (args.flag("--help") || args.flag("-h")) { std::cout << mesh_help; return 0; }
+  if (!args.has("-o")) throw Usage_error("mesh needs -o OUT");
+  const std::string out_path = args.values.at("-o");
+  check_mesh_path(out_path);
+  std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
+  if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
+  Output_files files(outputs, args.positional);
+
+  const auto t_start = std::chrono::steady_clock::now();
+  const Sum_input in = read_sum_input(args);
+  CGAL::Pmsum::Mesh_statistics ms;
+  const Mesh mesh = compute_mesh(in, ms);
+  const auto t_write = std::chrono::steady_clock::now();
+  write_mesh(files["-o"], mesh);
+  const double write_seconds = seconds_since(t_write);
+
+  if (args.has("--json")) {
+    Json seconds;
+    seconds.num("read", in.read_seconds).num("sum", ms.seconds_sum).num("reconstruction", ms.seconds_mesh)
+      .num("write", write_seconds).num("total", seconds_since(t_start));
+    Json j = sum_summary(in, ms.sum);
+    j.str("command", "mesh").str("output", out_path).object("mesh", mesh_summary(ms)).object("seconds", seconds);
+    write_json(files["--json"], j);
+  }
+  if (!in.quiet)
+    std::cerr << "pmsum: a mesh of " << ms.vertices << " vertices and " << ms.triangles << " triangles ("
+              << ms.checks.shells << " shells, " << ms.checks.void_shells << " voids"
+              << (ms.refinements ? ", d halved " + std::to_string(ms.refinements) + " times" : std::string())
+              << ") written to " << out_path << " (" << std::setprecision(3) << seconds_since(t_start) << " s)\n";
+  return 0;
+}
+
+} // namespace pmsum_cli
