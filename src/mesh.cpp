@@ -48,15 +48,17 @@ void write_mesh(Output_file& file, const Mesh& mesh)
 {
   const std::string e = extension(file.path());
   const auto np = CGAL::parameters::stream_precision(17);
-  bool ok = false;
+  const bool binary = e == "ply" || e == "stl";
   auto write = [&](std::ostream& os) {
+    if (binary) CGAL::IO::set_mode(os, CGAL::IO::BINARY); // the stream writers read the mode, not use_binary_mode
+    bool ok = false;
     if (e == "off") ok = CGAL::IO::write_OFF(os, mesh, np);
     if (e == "obj") ok = CGAL::IO::write_OBJ(os, mesh, np);
-    if (e == "ply") ok = CGAL::IO::write_PLY(os, mesh, np.use_binary_mode(true));
-    if (e == "stl") ok = CGAL::IO::write_STL(os, mesh, np.use_binary_mode(true));
+    if (e == "ply") ok = CGAL::IO::write_PLY(os, mesh, np);
+    if (e == "stl") ok = CGAL::IO::write_STL(os, mesh, np);
+    if (!ok) throw Error("cannot write the mesh to '" + file.path() + "'"); // the temporary file is removed
   };
-  file.write(write, e == "ply" || e == "stl" ? std::ios::out | std::ios::binary : std::ios::out);
-  if (!ok) throw Error("cannot write the mesh to '" + file.path() + "'");
+  file.write(write, binary ? std::ios::out | std::ios::binary : std::ios::out);
 }
 
 namespace {
@@ -73,7 +75,8 @@ const std::string mesh_help = std::string(
   "  -o OUT                 .off, .obj (17 digits), .ply (binary doubles) or .stl (binary:\n"
   "                         coordinates rounded to float)\n"
   "  --json FILE            write a summary: the mesh's checks and sizes, the d used, seconds\n"
-  "                         of the sum and of the reconstruction\n") + sum_options_help;
+  "                         of the sum and of the reconstruction\n"
+  "The options of sum follow, but --all-candidates, --no-cd-filter and --levels.\n") + sum_options_help;
 
 } // namespace
 
@@ -81,7 +84,8 @@ int command_mesh(int argc, char** argv)
 {
   std::vector<std::string> valued = {"-d", "--scale-q", "--threads", "-o", "--json"};
   std::vector<std::string> flags = sum_flags;
-  flags.erase(std::remove(flags.begin(), flags.end(), "--all-candidates"), flags.end());
+  // The vertices must be boundary points of the net: not every candidate, not untested ones.
+  for (const char* f : {"--all-candidates", "--no-cd-filter"}) flags.erase(std::remove(flags.begin(), flags.end(), f), flags.end());
   const Arguments args(argc, argv, 2, valued, flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << mesh_help; return 0; }
   if (!args.has("-o")) throw Usage_error("mesh needs -o OUT");

@@ -307,6 +307,10 @@ if awk 'NR == 2 { nv = $1; nf = $2 } NR > 2 + nv && NF == 4 { f++; for (i = 2; i
         END { for (k in e) if (e[k] != 2) bad = 1; exit bad || f != nf || f < 100 }' "$work/m.off" \
    && grep -q "\"triangles\": $(sed -n 2p "$work/m.off" | cut -d' ' -f2)," "$work/m.json"; then ok; else ko "mesh OFF: not closed or counts"; fi
 for e in ply obj stl; do "$pmsum" mesh "$cube" "$tet" -d 0.2 -o "$work/m.$e" --quiet && [ -s "$work/m.$e" ] && ok || ko "mesh .$e"; done
+# binary PLY and STL (84 + 50 bytes per triangle), with the OFF's triangles
+nf=$(sed -n 2p "$work/m.off" | cut -d' ' -f2)
+head -c 200 "$work/m.ply" | grep -aq "format binary_little_endian" && ok || ko "mesh .ply is not binary"
+[ "$(stat -c %s "$work/m.stl")" = $((84 + 50 * nf)) ] && ok || ko "mesh .stl is not binary with $nf triangles"
 # validate --mesh: checks, shells and the distance to the exact boundary, both ways
 "$pmsum" validate "$cube" "$tet" -d 0.2 --quiet --mesh --save-mesh "$work/vm.off" \
   --json "$work/vm.json" > "$work/vm.txt"
@@ -315,6 +319,7 @@ if [ $? = 0 ] && grep -q "mesh checks       closed, manifold" "$work/vm.txt" && 
    && [ -s "$work/vm.off" ]; then ok; else ko "validate --mesh"; cat "$work/vm.txt"; fi
 expect_fail 2 ".off, .obj, .ply or .stl" -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.xyz"
 expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --all-candidates
+expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --no-cd-filter
 expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
 expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
 # a slab thinner than the points' spacing even after two refinements: an error, no file

@@ -475,9 +475,9 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   REQUIRE(c.valid());
   CHECK(c.shells == 1);
   CHECK(ms.checks.valid());
-  CHECK(ms.vertices == num_vertices(m));
-  CHECK(ms.triangles == num_faces(m));
-  CHECK(ms.sum.output_points >= num_vertices(m)); // the vertices are the sum's points
+  CHECK(ms.vertices == vertices(m).size());
+  CHECK(ms.triangles == faces(m).size());
+  CHECK(ms.sum.output_points >= ms.vertices); // the vertices are the sum's points
   // every vertex on the box's surface; every point of a triangle within d of it
   auto surface_distance = [&](const IK::Point_3& x) {
     double out = 0, in = HUGE_VAL;

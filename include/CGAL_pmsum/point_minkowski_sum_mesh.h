@@ -110,8 +110,9 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
     normals.reserve(records.size());
     for (const Record& r : records) {
       points.emplace_back(r.point);
-      // On a convolution edge or vertex the normal is one of several: none is given.
-      if (r.origin_p.dimension + r.origin_q.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
+      // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is given.
+      if (r.origin_p.dimension + r.origin_q.dimension <= 1 || r.origin_p.rational_weights || r.origin_q.rational_weights)
+        normals.push_back(CGAL::NULL_VECTOR);
       else normals.emplace_back(CGAL::to_double(r.normal.x()), CGAL::to_double(r.normal.y()), CGAL::to_double(r.normal.z()));
     }
     ms.seconds_sum += in::seconds_since(t_sum);
@@ -121,10 +122,11 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
     ms.covering_distance = dl;
     ms.refinements = level;
     if (ms.checks.valid()) {
-      ms.vertices = num_vertices(mesh);
-      ms.triangles = num_faces(mesh);
+      ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
+      ms.triangles = faces(mesh).size();
       return;
     }
+    clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
   }
   clear(mesh);
   throw Pmsum::Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " +

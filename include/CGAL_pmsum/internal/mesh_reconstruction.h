@@ -56,6 +56,8 @@ struct Normal_consistent_priority
   double operator()(const AdvancingFront& adv, Cell_handle& c, const int& index) const
   {
     const double cos_max_angle = 0.17364817766693; // cos(80 degrees)
+    const double radius = adv.smallest_radius_delaunay_sphere(c, index);
+    if (radius == std::numeric_limits<double>::infinity()) return radius; // (and a vertex may have no id)
     std::array<Vector, 3> n;
     std::array<typename Cell_handle::value_type::Vertex_handle, 3> v;
     for (int k = 0; k < 3; ++k) {
@@ -67,7 +69,7 @@ struct Normal_consistent_priority
     const double length = std::sqrt(t.squared_length());
     for (const Vector& nk : n)
       if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return std::numeric_limits<double>::infinity();
-    return adv.smallest_radius_delaunay_sphere(c, index);
+    return radius;
   }
 };
 
