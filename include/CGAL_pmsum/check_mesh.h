@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,23 @@ void check_shells(const TriangleMesh& mesh, Mesh_checks& c)
   }
 }
 
+/// check_mesh(), told whether the mesh is free of self-intersections when that is already
+/// known (`self_intersection_free`), so as not to test it again.
+template <class ConcurrencyTag, class TriangleMesh>
+Mesh_checks check_mesh_given(const TriangleMesh& mesh, std::optional<bool> self_intersection_free)
+{
+  Mesh_checks c;
+  c.closed = CGAL::is_closed(mesh);
+  c.manifold = CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_triangle_mesh(mesh);
+  c.manifold = c.manifold && !has_pinched_vertex(mesh);
+  if (!c.closed || !c.manifold) return c;
+  c.self_intersection_free = self_intersection_free
+                               ? *self_intersection_free
+                               : !CGAL::Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(mesh);
+  if (c.self_intersection_free) check_shells(mesh, c);
+  return c;
+}
+
 } // namespace internal
 
 /// \ingroup PkgPointMinkowskiSumMesh
@@ -101,14 +119,7 @@ void check_shells(const TriangleMesh& mesh, Mesh_checks& c)
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh>
 Mesh_checks check_mesh(const TriangleMesh& mesh)
 {
-  Mesh_checks c;
-  c.closed = CGAL::is_closed(mesh);
-  c.manifold = CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_triangle_mesh(mesh);
-  c.manifold = c.manifold && !internal::has_pinched_vertex(mesh);
-  if (!c.closed || !c.manifold) return c;
-  c.self_intersection_free = !CGAL::Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(mesh);
-  if (c.self_intersection_free) internal::check_shells(mesh, c);
-  return c;
+  return internal::check_mesh_given<ConcurrencyTag>(mesh, std::nullopt);
 }
 
 } // namespace Pmsum

@@ -36,6 +36,7 @@
 #include <set>
 #include <utility>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -158,9 +159,16 @@ Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
   fill_holes(mesh, 3 * d);
   // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),
   // cut the crossing triangles with a growing neighbourhood and fill again.
-  for (int rings = 1; rings <= 3 && cut_self_intersections<ConcurrencyTag>(mesh, rings); ++rings)
+  // The last search that found no crossing, on the mesh as it is, answers that check.
+  std::optional<bool> self_intersection_free;
+  for (int rings = 1; rings <= 3; ++rings) {
+    if (!cut_self_intersections<ConcurrencyTag>(mesh, rings)) {
+      self_intersection_free = true;
+      break;
+    }
     fill_holes(mesh, 3 * d);
-  Mesh_checks c = check_mesh<ConcurrencyTag>(mesh);
+  }
+  Mesh_checks c = check_mesh_given<ConcurrencyTag>(mesh, self_intersection_free);
   if (c.self_intersection_free && !c.bounds_a_volume) {
     PMP::orient_to_bound_a_volume(mesh);
     check_shells(mesh, c); // reorienting changes no position: the other checks stand
