@@ -33,7 +33,8 @@ Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
   j.integer("vertices", ms.vertices).integer("triangles", ms.triangles).num("covering_distance", ms.covering_distance)
     .integer("refinements", std::size_t(ms.refinements)).boolean("closed", c.closed).boolean("manifold", c.manifold)
     .boolean("self_intersection_free", c.self_intersection_free).boolean("bounds_a_volume", c.bounds_a_volume)
-    .integer("shells", c.shells).integer("void_shells", c.void_shells);
+    .integer("shells", c.shells).integer("void_shells", c.void_shells).num("point_distance", ms.point_distance)
+    .num("boundary_to_mesh_bound", ms.boundary_to_mesh_bound());
   return j;
 }
 

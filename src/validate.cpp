@@ -205,7 +205,8 @@ int command_validate(int argc, char** argv)
                 << "; " << c.shells << " shells (" << c.void_shells << " voids), exact: " << coverage.size() << " ("
                 << voids << ")\n"
                 << "  mesh distance     mesh to exact " << distance.mesh_to_surface / in.d << " d, exact to mesh "
-                << distance.surface_to_mesh / in.d << " d\n";
+                << distance.surface_to_mesh / in.d << " d (proved below " << ms.boundary_to_mesh_bound() / in.d
+                << " d: output points within " << ms.point_distance / in.d << " d of the mesh)\n";
     std::cout << "  mesh seconds      " << mesh_seconds << " (sum " << ms.seconds_sum << ", reconstruction "
               << ms.seconds_mesh << "), Nef ratio " << (mesh_seconds > 0 ? ref->seconds() / mesh_seconds : 0) << "\n";
   }

@@ -478,6 +478,9 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   CHECK(ms.vertices == vertices(m).size());
   CHECK(ms.triangles == faces(m).size());
   CHECK(ms.sum.output_points >= ms.vertices); // the vertices are the sum's points
+  // the points the reconstruction left out are near the mesh: the proved bound is below 2 d
+  CHECK(ms.point_distance < ms.covering_distance);
+  CHECK(ms.boundary_to_mesh_bound() == ms.covering_distance + ms.point_distance);
   // every vertex on the box's surface; every point of a triangle within d of it
   auto surface_distance = [&](const IK::Point_3& x) {
     double out = 0, in = HUGE_VAL;
@@ -522,6 +525,34 @@ TEST_CASE("measure_mesh_distance: closed-form distances both ways", "[applicatio
   CHECK(taller.mesh_to_surface == Approx(0.2).margin(1e-12));
   CHECK(taller.surface_to_mesh == Approx(0.2).margin(1e-12));
   CHECK(taller.mesh_samples > 12 * 66);
+}
+
+TEST_CASE("largest_distance_to_mesh: 0 at vertices, the distance to the nearest triangle else", "[applications][mesh]")
+{
+  using CGAL::Pmsum::internal::largest_distance_to_mesh;
+  const Mesh unit = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  std::vector<IK::Point_3> corners;
+  for (auto v : unit.vertices()) corners.push_back(unit.point(v));
+  CHECK(largest_distance_to_mesh(corners, unit) == 0);
+  corners.push_back(IK::Point_3(0.5, 0.25, 1.375)); // above the top: 0.375
+  corners.push_back(IK::Point_3(0.5, 0.5, 0.75));   // inside: 0.25 from the top
+  CHECK(largest_distance_to_mesh(corners, unit) == Approx(0.375).margin(1e-12));
+  CHECK(largest_distance_to_mesh(corners, Mesh()) == std::numeric_limits<double>::infinity());
+}
+
+TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", "[applications][mesh]")
+{
+  Mesh m = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  m.join(to_mesh<Mesh>(box({2, 0, 0}, {2.1, 0.1, 0.1}))); // diagonal 0.173
+  m.join(to_mesh<Mesh>(box({4, 0, 0}, {4.3, 0.3, 0.3}))); // diagonal 0.520
+  CGAL::Pmsum::internal::remove_bubbles(m, 0.2);
+  CHECK(faces(m).size() == 2 * 12);
+  CGAL::Pmsum::internal::remove_bubbles(m, 0.6);
+  REQUIRE(faces(m).size() == 12);
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(1));
+  Mesh tiny = to_mesh<Mesh>(box({2, 0, 0}, {2.1, 0.1, 0.1}));
+  CGAL::Pmsum::internal::remove_bubbles(tiny, 1);
+  CHECK(faces(tiny).size() == 12);
 }
 
 // Known limit (issue 15 open): the reconstruction leaves holes on this box with a box-shaped

@@ -32,10 +32,10 @@ struct Mesh_distance
 
 namespace internal {
 
-/// The largest distance from the lattice samples of `from` to the triangles of `to`;
-/// `samples` counts the samples.
-inline double largest_distance(const std::vector<Shell>& from, const std::vector<Shell>& to, double spacing,
-                               std::size_t& samples)
+/// The largest distance from the points that `for_each_point(f)` passes to `f` (as
+/// `Point_search::K::Point_3`) to the triangles of `to`: infinity if `to` has none.
+template <class ForEachPoint>
+double largest_distance_to(const std::vector<Shell>& to, const ForEachPoint& for_each_point)
 {
   using K = Point_search::K;
   using Triangles = std::vector<K::Triangle_3>;
@@ -50,14 +50,24 @@ inline double largest_distance(const std::vector<Shell>& from, const std::vector
   Tree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
   double worst = 0;
-  samples = 0;
-  for (const Shell& s : from)
-    for (const auto& t : s.triangles)
-      for_each_lattice_point(s, t, spacing, [&](const K::Point_3& x) {
-        ++samples;
-        worst = (std::max)(worst, tree.squared_distance(x));
-      });
+  for_each_point([&](const K::Point_3& x) { worst = (std::max)(worst, tree.squared_distance(x)); });
   return std::sqrt(worst);
+}
+
+/// The largest distance from the lattice samples of `from` to the triangles of `to`;
+/// `samples` counts the samples.
+inline double largest_distance(const std::vector<Shell>& from, const std::vector<Shell>& to, double spacing,
+                               std::size_t& samples)
+{
+  samples = 0;
+  return largest_distance_to(to, [&](const auto& f) {
+    for (const Shell& s : from)
+      for (const auto& t : s.triangles)
+        for_each_lattice_point(s, t, spacing, [&](const Point_search::K::Point_3& x) {
+          ++samples;
+          f(x);
+        });
+  });
 }
 
 /// A triangle mesh as one shell (positions rounded to double).

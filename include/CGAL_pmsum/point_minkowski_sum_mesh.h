@@ -6,8 +6,15 @@
 // point_minkowski_sum() (each exactly on the boundary). The points (the default (d/2, d)-net)
 // are joined by CGAL's advancing-front surface reconstruction, chosen and repaired with the
 // points' normals (internal/mesh_reconstruction.h); the result is checked (check_mesh.h), and if
-// a check fails the sum is recomputed with a smaller covering distance. A mesh that fails every
+// a check fails, or an output point the reconstruction left out lies d or farther from the
+// mesh, the sum is recomputed with a smaller covering distance. A mesh that fails every
 // check is never returned: Mesh_reconstruction_failed is thrown instead.
+//
+// Why the points must stay near the mesh: they cover the exact boundary within d (every
+// boundary point has an output point closer than d), so every boundary point is closer than
+// d + e to the mesh, e the largest distance from an output point to the mesh (0 when every
+// point is a vertex). A reconstruction that drops the points of a part of the boundary (the
+// walls of a narrow passage, say) may still be a valid mesh, of the wrong shape: e tells.
 
 #ifndef CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
 #define CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
@@ -16,6 +23,7 @@
 #include <CGAL_pmsum/internal/mesh_reconstruction.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +40,12 @@ struct Mesh_statistics
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
   std::size_t triangles = 0;   ///< triangles of the mesh
   Mesh_checks checks;          ///< the checks of the mesh returned
+  /// the largest distance from an output point of the last run to the mesh (0 if every
+  /// point is a vertex; infinity if the mesh failed a check)
+  double point_distance = 0;
+  /// \returns a proved bound: every point of the exact boundary is closer than this to the
+  /// mesh (`covering_distance + point_distance`)
+  double boundary_to_mesh_bound() const { return covering_distance + point_distance; }
   double seconds_sum = 0;      ///< all runs of the sum
   double seconds_mesh = 0;     ///< all reconstructions and checks
 };
@@ -43,13 +57,17 @@ struct Mesh_statistics
 /// vertices are output points of point_minkowski_sum() (exactly on the boundary, rounded
 /// only if the mesh's kernel is inexact), joined by CGAL's advancing-front surface
 /// reconstruction. The mesh returned is closed, 2-manifold, free of self-intersections and
-/// bounds a volume (outer shells outward, voids inward): if the reconstruction at `d` fails a
-/// check, the sum is recomputed at `d/2`, then `d/4`; if that fails too,
+/// bounds a volume (outer shells outward, voids inward), and every output point of the sum
+/// lies closer than `d'` to it (`d'` the covering distance used): if the reconstruction at `d`
+/// fails a check, the sum is recomputed at `d/2`, then `d/4`; if that fails too,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
-/// What is measured, not proved: the distance from the mesh to the exact boundary and back,
-/// and its shells against the exact boundary's (`pmsum validate --mesh`,
-/// `benchmark/mesh/results/results.md`).
+/// Proved: every point of the exact boundary is closer than `d' + e` to the mesh, `e` the
+/// largest distance from an output point to the mesh (`Mesh_statistics::point_distance`,
+/// below `d'`; 0 when every point is a vertex), since the points cover the boundary
+/// within `d'`. Measured, not proved: the distance from the mesh to the exact boundary, the
+/// distance the other way (usually well below the bound), and the mesh's shells against the
+/// exact boundary's (`pmsum validate --mesh`, `benchmark/mesh/results/results.md`).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \tparam PolygonMeshP, PolygonMeshQ models of `FaceListGraph`
@@ -118,10 +136,12 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
     ms.seconds_sum += in::seconds_since(t_sum);
     const auto t_mesh = in::Clock::now();
     ms.checks = in::reconstruct_mesh<ConcurrencyTag>(points, normals, dl, mesh);
+    ms.point_distance = ms.checks.valid() ? in::largest_distance_to_mesh(points, mesh)
+                                          : std::numeric_limits<double>::infinity();
     ms.seconds_mesh += in::seconds_since(t_mesh);
     ms.covering_distance = dl;
     ms.refinements = level;
-    if (ms.checks.valid()) {
+    if (ms.checks.valid() && ms.point_distance < dl) {
       ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
       ms.triangles = faces(mesh).size();
       return;
@@ -131,7 +151,10 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
   clear(mesh);
   throw Pmsum::Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " +
                                           std::to_string(d) + " down to " + std::to_string(ms.covering_distance) +
-                                          "): the last reconstruction was " + ms.checks.failures() +
+                                          "): the last reconstruction " +
+                                          (ms.checks.valid() ? "left output points up to " + std::to_string(ms.point_distance / d) +
+                                                                 " d from the mesh (a part of the boundary missing)"
+                                                             : "was " + ms.checks.failures()) +
                                           ", so none is returned");
 }
 

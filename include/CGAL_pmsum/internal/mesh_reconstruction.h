@@ -14,18 +14,21 @@
 // The reconstruction leaves holes at sharp corners, and along the rims of parts thinner than
 // about three times the point spacing: they are closed by triangulating each hole's border.
 // Where a filled hole crosses the triangles beside it, those are cut away with their
-// neighbourhood and the hole filled again. Where the result still fails a check,
+// neighbourhood and the hole filled again. Shells smaller than d (bubbles closed on a few
+// points beside a crease) are removed. Where the result still fails a check,
 // point_minkowski_sum_mesh() refines.
 
 #ifndef CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
 #define CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
 
 #include <CGAL_pmsum/check_mesh.h>
+#include <CGAL_pmsum/measure_mesh_distance.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -130,6 +133,33 @@ bool cut_self_intersections(TriangleMesh& mesh, int rings)
   return true;
 }
 
+/// Removes the shells (connected components) of `mesh` whose bounding box has a diagonal
+/// shorter than `d`, unless no other shell would remain: bubbles, such as a tetrahedron that
+/// the reconstruction closes on four points near a crease, beside the shell they belong to.
+/// A shell of the exact boundary that small (a tiny void) is lost with them, but not silently:
+/// its points are then as far from the mesh as the void is from the rest of the boundary,
+/// which point_minkowski_sum_mesh() checks.
+template <class TriangleMesh>
+void remove_bubbles(TriangleMesh& mesh, double d)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  const std::size_t n = PMP::connected_components(mesh, component);
+  if (n < 2) return;
+  std::vector<CGAL::Bbox_3> boxes(n);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for (auto f : faces(mesh))
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) boxes[get(component, f)] += get(vpm, v).bbox();
+  std::vector<std::size_t> small;
+  for (std::size_t k = 0; k < n; ++k) {
+    const CGAL::Bbox_3& b = boxes[k];
+    double squared = 0;
+    for (int c = 0; c < 3; ++c) squared += (b.max(c) - b.min(c)) * (b.max(c) - b.min(c));
+    if (squared < d * d) small.push_back(k);
+  }
+  if (small.size() < n) PMP::remove_connected_components(mesh, small, component);
+}
+
 /// Joins `points` (exact or not; reconstructed from their double values; a d-covering) with
 /// their unit outward `normals` into `mesh`, oriented to bound a volume. Returns the mesh's checks; the
 /// mesh is left empty if the triangles do not form an oriented manifold.
@@ -168,12 +198,24 @@ Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
     }
     fill_holes(mesh, 3 * d);
   }
+  remove_bubbles(mesh, d); // (removing shells makes no crossing)
   Mesh_checks c = check_mesh_given<ConcurrencyTag>(mesh, self_intersection_free);
   if (c.self_intersection_free && !c.bounds_a_volume) {
     PMP::orient_to_bound_a_volume(mesh);
     check_shells(mesh, c); // reorienting changes no position: the other checks stand
   }
   return c;
+}
+
+/// The largest distance from `points` to the triangles of `mesh` (0 if every point is a
+/// vertex; positions rounded to doubles, alike for both).
+template <class Point, class TriangleMesh>
+double largest_distance_to_mesh(const std::vector<Point>& points, const TriangleMesh& mesh)
+{
+  return largest_distance_to({to_shell(mesh)}, [&](const auto& f) {
+    for (const Point& p : points)
+      f(Point_search::K::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+  });
 }
 
 } // namespace internal
