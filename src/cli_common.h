@@ -102,6 +102,7 @@ public:
   Json& str(const std::string& key, const std::string& v) { return add(key, quote(v)); }
   Json& num(const std::string& key, double v)
   {
+    if (!std::isfinite(v)) return add(key, "null"); // JSON has no infinity
     std::ostringstream s;
     s << std::setprecision(10) << v;
     return add(key, s.str());

@@ -75,9 +75,12 @@ const std::string mesh_help = std::string(
   "\n"
   "  -o OUT                 .off, .obj (17 digits), .ply (binary doubles) or .stl (binary:\n"
   "                         coordinates rounded to float)\n"
-  "  --json FILE            write a summary: the mesh's checks and sizes, the d used, seconds\n"
-  "                         of the sum and of the reconstruction\n"
-  "The options of sum follow, but --all-candidates, --no-cd-filter and --levels.\n") + sum_options_help;
+  "  --json FILE            write a summary: the mesh's checks and sizes, the d used, the\n"
+  "                         largest distance from an output point to the mesh and the bound it\n"
+  "                         proves on the exact boundary's distance, seconds of the sum and of\n"
+  "                         the reconstruction\n"
+  "The options of sum follow, but --all-candidates, --no-cd-filter, --no-trim-points,\n"
+  "--no-islands and --levels.\n") + sum_options_help;
 
 } // namespace
 
@@ -85,8 +88,9 @@ int command_mesh(int argc, char** argv)
 {
   std::vector<std::string> valued = {"-d", "--scale-q", "--threads", "-o", "--json"};
   std::vector<std::string> flags = sum_flags;
-  // The vertices must be boundary points of the net: not every candidate, not untested ones.
-  for (const char* f : {"--all-candidates", "--no-cd-filter"}) flags.erase(std::remove(flags.begin(), flags.end(), f), flags.end());
+  // The vertices must be boundary points of the net: not every candidate, not untested ones,
+  // and a covering (the mesh's bound needs it): trim and island points too.
+  for (const char* f : {"--all-candidates", "--no-cd-filter", "--no-trim-points", "--no-islands"}) flags.erase(std::remove(flags.begin(), flags.end(), f), flags.end());
   const Arguments args(argc, argv, 2, valued, flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << mesh_help; return 0; }
   if (!args.has("-o")) throw Usage_error("mesh needs -o OUT");

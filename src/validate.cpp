@@ -56,6 +56,8 @@ int command_validate(int argc, char** argv)
   std::vector<std::pair<std::string, std::string>> outputs;
   if (args.has("--save-mesh") && !args.flag("--mesh")) throw Usage_error("--save-mesh needs --mesh");
   if (args.flag("--mesh") && args.flag("--all-candidates")) throw Usage_error("--mesh meshes the covering net: not with --all-candidates");
+  if (args.flag("--mesh") && (args.flag("--no-trim-points") || args.flag("--no-islands")))
+    throw Usage_error("--mesh needs the covering's trim and island points: not with --no-trim-points or --no-islands");
   if (args.flag("--mesh") && args.has("--levels")) throw Usage_error("--mesh is not available with --levels");
   if (args.has("--save-mesh")) check_mesh_path(args.values.at("--save-mesh"));
   for (const char* o : {"--points", "--shell-points", "--save-exact", "--save-exact-off", "--json", "--save-mesh"})
@@ -178,7 +180,8 @@ int command_validate(int argc, char** argv)
       mesh_error = e.what();
     }
     mesh_ok = mesh_error.empty() && ms.checks.valid() && ms.checks.shells == coverage.size() &&
-              ms.checks.void_shells == voids && distance.mesh_to_surface < in.d && distance.surface_to_mesh < in.d;
+              ms.checks.void_shells == voids && distance.mesh_to_surface < in.d && distance.surface_to_mesh < in.d &&
+              distance.surface_to_mesh < ms.boundary_to_mesh_bound(); // the proved bound, checked
   }
   const bool ok = off_boundary == 0 && covered == coverage.size() && mesh_ok;
 

@@ -316,11 +316,15 @@ head -c 200 "$work/m.ply" | grep -aq "format binary_little_endian" && ok || ko "
   --json "$work/vm.json" > "$work/vm.txt"
 if [ $? = 0 ] && grep -q "mesh checks       closed, manifold" "$work/vm.txt" && grep -q "1 shells (0 voids), exact: 1 (0)" "$work/vm.txt" \
    && grep -q '"mesh_to_exact_over_d": 0\.' "$work/vm.json" && grep -q '"exact_to_mesh_over_d": 0\.' "$work/vm.json" \
+   && grep -q '"boundary_to_mesh_bound": 0\.' "$work/vm.json" \
    && [ -s "$work/vm.off" ]; then ok; else ko "validate --mesh"; cat "$work/vm.txt"; fi
 expect_fail 2 ".off, .obj, .ply or .stl" -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.xyz"
 expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --all-candidates
 expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --no-cd-filter
+expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --no-trim-points
+expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --no-islands
 expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
+expect_fail 2 "trim and island points"   -- validate "$cube" "$tet" -d 0.2 --mesh --no-islands
 expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
 # a slab thinner than the points' spacing even after two refinements: an error, no file
 printf 'OFF\n8 12 0\n0 0 0\n0 0 0.01\n0 2 0\n0 2 0.01\n2 0 0\n2 0 0.01\n2 2 0\n2 2 0.01\n3 0 1 3\n3 0 3 2\n3 4 6 7\n3 4 7 5\n3 0 4 5\n3 0 5 1\n3 2 3 7\n3 2 7 6\n3 0 2 6\n3 0 6 4\n3 1 5 7\n3 1 7 3\n' > "$work/slab.off"

@@ -50,6 +50,18 @@ struct Mesh_statistics
   double seconds_mesh = 0;     ///< all reconstructions and checks
 };
 
+namespace internal {
+
+/// Why the mesh of the last level was refused, for Mesh_reconstruction_failed.
+inline std::string last_failure(const Mesh_statistics& ms)
+{
+  if (ms.checks.valid() && ms.checks.shells == 0) return "was empty";
+  if (!ms.checks.valid()) return "was " + ms.checks.failures();
+  return "left output points up to " + std::to_string(ms.point_distance / ms.covering_distance) +
+         " times that d from the mesh (a part of the boundary missing)";
+}
+
+} // namespace internal
 } // namespace Pmsum
 
 /// \ingroup PkgPointMinkowskiSumMesh
@@ -79,9 +91,11 @@ struct Mesh_statistics
 /// \param d covering distance of the vertices
 /// \param mesh the output (cleared first)
 /// \param np_p as for point_minkowski_sum(), and `mesh_statistics` (a
-///        `CGAL::Pmsum::Mesh_statistics&` to fill); `use_covering_net(false)` is not allowed
+///        `CGAL::Pmsum::Mesh_statistics&` to fill); `use_covering_net` is not allowed, and
+///        `use_trim_points` and `search_islands` must be true (the mesh needs the covering)
 /// \param np_q as for point_minkowski_sum()
-/// \pre the preconditions of point_minkowski_sum(); violations throw `CGAL::Pmsum::Invalid_input`
+/// \pre the preconditions of point_minkowski_sum(), and `use_trim_points` and `search_islands`
+///      not false; violations throw `CGAL::Pmsum::Invalid_input`
 /// \throws CGAL::Pmsum::Mesh_reconstruction_failed if no valid mesh was made
 template <class ConcurrencyTag = CGAL::Sequential_tag, class PolygonMeshP, class PolygonMeshQ, class TriangleMesh,
           class NamedParametersP = parameters::Default_named_parameters,
@@ -95,6 +109,10 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
                                        Pmsum::internal_np::roadmap_neighbors_t>(),
                 "CGAL_pmsum: point_minkowski_sum_mesh() meshes the covering net; use_covering_net and "
                 "roadmap_neighbors are not parameters of it");
+  if (!parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::use_trim_points), true) ||
+      !parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::search_islands), true))
+    throw Pmsum::Invalid_input("point_minkowski_sum_mesh() needs the covering's trim and island points "
+                               "(use_trim_points and search_islands true): its bound rests on the covering");
   using Point = typename boost::property_traits<
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   Pmsum::Mesh_statistics local;
@@ -141,7 +159,7 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
     ms.seconds_mesh += in::seconds_since(t_mesh);
     ms.covering_distance = dl;
     ms.refinements = level;
-    if (ms.checks.valid() && ms.point_distance < dl) {
+    if (ms.checks.valid() && ms.checks.shells > 0 && ms.point_distance < dl) {
       ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
       ms.triangles = faces(mesh).size();
       return;
@@ -151,10 +169,7 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
   clear(mesh);
   throw Pmsum::Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " +
                                           std::to_string(d) + " down to " + std::to_string(ms.covering_distance) +
-                                          "): the last reconstruction " +
-                                          (ms.checks.valid() ? "left output points up to " + std::to_string(ms.point_distance / d) +
-                                                                 " d from the mesh (a part of the boundary missing)"
-                                                             : "was " + ms.checks.failures()) +
+                                          "): the last reconstruction " + in::last_failure(ms) +
                                           ", so none is returned");
 }
 

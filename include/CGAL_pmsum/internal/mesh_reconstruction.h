@@ -136,9 +136,10 @@ bool cut_self_intersections(TriangleMesh& mesh, int rings)
 /// Removes the shells (connected components) of `mesh` whose bounding box has a diagonal
 /// shorter than `d`, unless no other shell would remain: bubbles, such as a tetrahedron that
 /// the reconstruction closes on four points near a crease, beside the shell they belong to.
-/// A shell of the exact boundary that small (a tiny void) is lost with them, but not silently:
-/// its points are then as far from the mesh as the void is from the rest of the boundary,
-/// which point_minkowski_sum_mesh() checks.
+/// A shell of the exact boundary that small (a tiny void) is lost with them: its points are
+/// then as far from the mesh as the void is from the rest of the boundary, which
+/// point_minkowski_sum_mesh() refuses if it is d or more; nearer, only the shell count against
+/// the exact boundary's (pmsum validate --mesh) tells.
 template <class TriangleMesh>
 void remove_bubbles(TriangleMesh& mesh, double d)
 {
@@ -208,14 +209,21 @@ Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
 }
 
 /// The largest distance from `points` to the triangles of `mesh` (0 if every point is a
-/// vertex; positions rounded to doubles, alike for both).
+/// vertex; infinity if the mesh has no triangle), plus a margin of 256 units in the last
+/// place of the largest coordinate if not 0, for the rounding of the positions (to doubles,
+/// alike for both) and of the distance.
 template <class Point, class TriangleMesh>
 double largest_distance_to_mesh(const std::vector<Point>& points, const TriangleMesh& mesh)
 {
-  return largest_distance_to({to_shell(mesh)}, [&](const auto& f) {
-    for (const Point& p : points)
-      f(Point_search::K::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+  double scale = 0;
+  const double e = largest_distance_to({to_shell(mesh)}, [&](const auto& f) {
+    for (const Point& p : points) {
+      const Point_search::K::Point_3 x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      scale = (std::max)({scale, std::abs(x.x()), std::abs(x.y()), std::abs(x.z())});
+      f(x);
+    }
   });
+  return e > 0 ? e + 256 * std::numeric_limits<double>::epsilon() * scale : e;
 }
 
 } // namespace internal
