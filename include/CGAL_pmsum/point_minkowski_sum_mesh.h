@@ -6,8 +6,8 @@
 // point_minkowski_sum() (each exactly on the boundary). The points (the default (d/2, d)-net)
 // are joined by CGAL's advancing-front surface reconstruction, chosen and repaired with the
 // points' normals (internal/mesh_reconstruction.h); the result is checked (check_mesh.h), and if
-// a check fails, or an output point the reconstruction left out lies d or farther from the
-// mesh, the sum is recomputed with a smaller covering distance. A mesh that fails every
+// a check fails, or an output point the reconstruction left out lies as far as the covering
+// distance used or farther from the mesh, the sum is recomputed with a smaller one. A mesh that fails every
 // check is never returned: Mesh_reconstruction_failed is thrown instead.
 //
 // Why the points must stay near the mesh: they cover the exact boundary within d (every
