@@ -481,14 +481,14 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   // the points the reconstruction left out are near the mesh, and the exact boundary is
   // within the proved bound of it (measured at samples d/8 apart)
   CHECK(ms.point_distance < ms.covering_distance);
+  const auto exact_box = CGAL::Pmsum::internal::to_shell(to_mesh<Mesh>(box({0, 0, 0}, {1.5, 1.25, 1.5})));
+  CHECK(CGAL::Pmsum::measure_mesh_distance({exact_box}, m, d / 8).surface_to_mesh < ms.boundary_to_mesh_bound());
   // the bound rests on the covering: without trim or island points, refused
   Mesh refused;
   CHECK_THROWS_AS(CGAL::point_minkowski_sum_mesh(P, Q, d, refused, CGAL::parameters::use_trim_points(false)),
                   CGAL::Pmsum::Invalid_input);
   CHECK_THROWS_AS(CGAL::point_minkowski_sum_mesh(P, Q, d, refused, CGAL::parameters::search_islands(false)),
                   CGAL::Pmsum::Invalid_input);
-  const auto exact_box = CGAL::Pmsum::internal::to_shell(to_mesh<Mesh>(box({0, 0, 0}, {1.5, 1.25, 1.5})));
-  CHECK(CGAL::Pmsum::measure_mesh_distance({exact_box}, m, d / 8).surface_to_mesh < ms.boundary_to_mesh_bound());
   // every vertex on the box's surface; every point of a triangle within d of it
   auto surface_distance = [&](const IK::Point_3& x) {
     double out = 0, in = HUGE_VAL;
