@@ -375,3 +375,130 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
   CHECK(in > 100);   // the ranges decide both ways, often
   CHECK(out > 1000);
 }
+
+// --- Ranks (named parameter `communicator`): threads stand for the processes. ------------
+#include <CGAL_pmsum/Communicator.h>
+#include "shape_presets.h"
+
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+namespace {
+
+/// K threads of one process as K ranks: all_gather waits for the K messages.
+class Thread_ranks
+{
+public:
+  explicit Thread_ranks(int k) : m_slots(std::size_t(k)) {}
+  struct Rank : CGAL::Pmsum::Communicator
+  {
+    Thread_ranks* all;
+    int r;
+    Rank(Thread_ranks* a, int rank) : all(a), r(rank) {}
+    int rank() const override { return r; }
+    int size() const override { return int(all->m_slots.size()); }
+    std::vector<std::string> all_gather(const std::string& bytes) override
+    {
+      std::unique_lock<std::mutex> lock(all->m_mutex);
+      const std::size_t round = all->m_round;
+      all->m_slots[std::size_t(r)] = bytes;
+      if (++all->m_arrived == all->m_slots.size()) {
+        all->m_result = all->m_slots;
+        all->m_arrived = 0;
+        ++all->m_round;
+        all->m_changed.notify_all();
+      } else {
+        all->m_changed.wait(lock, [&] { return all->m_round != round; });
+      }
+      return all->m_result;
+    }
+  };
+
+private:
+  std::vector<std::string> m_slots, m_result;
+  std::size_t m_arrived = 0, m_round = 0;
+  std::mutex m_mutex;
+  std::condition_variable m_changed;
+};
+
+/// P + Q computed by k ranks: each rank's records and statistics.
+std::vector<Result> run_on_ranks(const Soup& P, const Soup& Q, double d, int k,
+                                 const std::function<bool(int, double)>& callback = {})
+{
+  Thread_ranks ranks(k);
+  const std::size_t n = std::size_t(k);
+  std::vector<Result> results(n);
+  std::vector<std::string> errors(n);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < k; ++r)
+    threads.emplace_back([&, r] {
+      Thread_ranks::Rank me(&ranks, r);
+      try {
+        auto np = CGAL::parameters::communicator(&me);
+        if (callback) results[std::size_t(r)] = run(P, Q, d, np.callback(std::function<bool(double)>([&, r](double f) { return callback(r, f); })));
+        else results[std::size_t(r)] = run(P, Q, d, np);
+      } catch (const CGAL::Pmsum::Operation_cancelled&) {
+        errors[std::size_t(r)] = "cancelled";
+      } catch (const std::exception& e) {
+        errors[std::size_t(r)] = e.what();
+      }
+    });
+  for (std::thread& t : threads) t.join();
+  for (const std::string& e : errors)
+    if (!e.empty()) throw std::runtime_error(e);
+  return results;
+}
+
+} // namespace
+
+TEST_CASE("ranks: k ranks give one process's output and counts", "[ranks]")
+{
+  // 1.5% and 7% of the sums' diagonals; both have trim points (the tunnel's passage).
+  const std::vector<std::tuple<const char*, const char*, double>> pairs = {{"knot", "tetrahedron", 0.15},
+                                                                          {"tunnel", "tunnel-cube-rotated", 0.6}};
+  for (const auto& [p, q, d] : pairs) {
+    const Soup P = pmsum_shapes::shape_preset(p), Q = pmsum_shapes::shape_preset(q);
+    const Result one = run(P, Q, d);
+    REQUIRE(one.stats.ranks.empty());
+    for (int k : {1, 2, 3}) {
+      INFO(p << " + " << q << " on " << k << " ranks");
+      const std::vector<Result> many = run_on_ranks(P, Q, d, k);
+      for (const Result& r : many) {
+        REQUIRE(r.records.size() == one.records.size());
+        std::size_t different = 0;
+        for (std::size_t i = 0; i < r.records.size(); ++i) {
+          const Record &a = r.records[i], &b = one.records[i];
+          different += !(a.point == b.point && a.normal == b.normal && a.origin_p.weights == b.origin_p.weights &&
+                         a.origin_q.weights == b.origin_q.weights &&
+                         a.origin_p.rational_weights == b.origin_p.rational_weights &&
+                         a.origin_q.rational_weights == b.origin_q.rational_weights);
+        }
+        CHECK(different == 0);
+        CHECK(r.stats.trim_points == one.stats.trim_points);
+        CHECK(one.stats.trim_points > 0);
+        CHECK(r.stats.candidates_covered == one.stats.candidates_covered);
+        CHECK(r.stats.cd_queries == one.stats.cd_queries);
+        CHECK(r.stats.triangle_pairs == one.stats.triangle_pairs);
+        CHECK(r.stats.trim_segments == one.stats.trim_segments);
+        // Each rank's share: every pair decided once, the work shared out.
+        REQUIRE(r.stats.ranks.size() == std::size_t(k));
+        std::size_t pairs_decided = 0, candidates = 0, largest = 0;
+        for (const auto& s : r.stats.ranks) {
+          pairs_decided += s.feature_pairs;
+          candidates += s.candidates;
+          largest = (std::max)(largest, s.candidates);
+        }
+        CHECK(pairs_decided == one.stats.feature_pairs);
+        CHECK(candidates == one.stats.candidates);
+        if (k > 1) CHECK(largest < one.stats.candidates);
+      }
+    }
+  }
+}
+
+TEST_CASE("ranks: a cancellation on one rank ends every rank", "[ranks]")
+{
+  const Soup P = pmsum_shapes::shape_preset("knot"), Q = pmsum_shapes::shape_preset("tetrahedron");
+  CHECK_THROWS_WITH(run_on_ranks(P, Q, 0.15, 2, [](int rank, double) { return rank != 1; }), "cancelled");
+}

@@ -8,9 +8,21 @@
 #define CGAL_PMSUM_STATISTICS_H
 
 #include <cstddef>
+#include <vector>
 
 namespace CGAL {
 namespace Pmsum {
+
+/// \ingroup PkgPointMinkowskiSumSupport
+/// One rank's share of the decisions of a run with a communicator (Statistics::ranks).
+struct Rank_statistics
+{
+  std::size_t feature_pairs = 0;   ///< feature pairs this rank decided
+  std::size_t candidates = 0;      ///< their candidates (the work estimate that shares them out)
+  std::size_t cd_queries = 0;      ///< collision tests of candidates made by this rank
+  double seconds_deciding = 0;     ///< seconds spent deciding its pairs
+  double seconds_exchanging = 0;   ///< seconds spent exchanging decisions (waiting for the others included)
+};
 
 /// \ingroup PkgPointMinkowskiSumSupport
 /// Counters and timings of one run of point_minkowski_sum() (or of one level of
@@ -41,6 +53,9 @@ struct Statistics
   double seconds_normal_filter = 0;         ///< normal filter (coarse to fine: first level only, else 0)
   double seconds_octree_filter = 0;         ///< interior certificate and leaf cells
   double seconds_cd_filter = 0;             ///< candidate enumeration and CD filter
+  /// With a communicator (named parameter `communicator`): each rank's share of the
+  /// decisions, in rank order (the same on every rank); empty without one.
+  std::vector<Rank_statistics> ranks;
 };
 
 } // namespace Pmsum

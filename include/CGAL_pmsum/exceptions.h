@@ -87,6 +87,25 @@ public:
   Operation_cancelled() : std::runtime_error("point_minkowski_sum was cancelled by its callback") {}
 };
 
+/// \ingroup PkgPointMinkowskiSumSupport
+/// With a communicator (named parameter `communicator`): another rank failed, and this one
+/// stops with it. The failing rank throws its own exception.
+class Rank_failed : public std::runtime_error
+{
+public:
+  /// Constructs the error with the message "rank R: WHAT".
+  /// \param rank the rank that failed
+  /// \param what its exception's message
+  Rank_failed(int rank, const std::string& what)
+    : std::runtime_error("rank " + std::to_string(rank) + ": " + what), m_rank(rank) {}
+  /// The rank that failed.
+  /// \returns its rank
+  int rank() const { return m_rank; }
+
+private:
+  int m_rank;
+};
+
 /// \ingroup PkgPointMinkowskiSumMesh
 /// point_minkowski_sum_mesh() could make no valid mesh from the points, even with the smaller
 /// covering distances it tried. Constructed from its message, as `std::runtime_error`.

@@ -19,6 +19,8 @@
 #ifndef CGAL_PMSUM_NAMED_PARAMETERS_H
 #define CGAL_PMSUM_NAMED_PARAMETERS_H
 
+#include <CGAL_pmsum/Communicator.h>
+
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
@@ -39,6 +41,7 @@ enum maximum_number_of_candidates_t { maximum_number_of_candidates };
 enum check_overlaps_t { check_overlaps };
 enum roadmap_neighbors_t { roadmap_neighbors };
 enum mesh_statistics_t { mesh_statistics };
+enum communicator_t { communicator };
 } // namespace internal_np
 
 /// \ingroup PkgPointMinkowskiSumNamedParameters
@@ -161,6 +164,15 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<S*, internal_np::mesh_statistics_t, Named_parameters>
   mesh_statistics(S& s) const { return {&s, *this}; }
 
+  /// Compute the sum together with the other ranks of `c` (default `nullptr`: this process
+  /// alone). Every rank calls the same function with the same input; each decides its share
+  /// of the candidates, and every rank gets the whole output, identical to one process's
+  /// (see CGAL::Pmsum::Communicator, and CGAL::Pmsum::MPI_communicator for MPI).
+  /// \param c the ranks, or `nullptr`
+  /// \returns this chain with the parameter added
+  Named_parameters<Communicator*, internal_np::communicator_t, Named_parameters>
+  communicator(Communicator* c) const { return {c, *this}; }
+
 #ifndef DOXYGEN_RUNNING
   // Every CGAL named parameter, returning this class so that ours may follow it.
 #define CGAL_add_named_parameter(X, Y, Z)                                                  \
@@ -243,6 +255,12 @@ roadmap_neighbors(unsigned k) { return Pmsum::Named_parameters<unsigned, Pmsum::
 template <class S>
 Pmsum::Named_parameters<S*, Pmsum::internal_np::mesh_statistics_t>
 mesh_statistics(S& s) { return Pmsum::Named_parameters<S*, Pmsum::internal_np::mesh_statistics_t>(&s); }
+
+/// \ingroup PkgPointMinkowskiSumNamedParameters
+/// \copydoc CGAL::Pmsum::Named_parameters::communicator
+inline Pmsum::Named_parameters<Pmsum::Communicator*, Pmsum::internal_np::communicator_t>
+communicator(Pmsum::Communicator* c)
+{ return Pmsum::Named_parameters<Pmsum::Communicator*, Pmsum::internal_np::communicator_t>(c); }
 
 } // namespace parameters
 } // namespace CGAL

@@ -282,6 +282,14 @@ public:
   bool here_perturbed() const { return m_perturbed; }
   /// The last crossing pair found (moving item, static item), if any.
   const std::optional<std::pair<Index, Index>>& last_crossing() const { return m_hit; }
+  /// Forgets what earlier queries found: the queries that follow then test the same
+  /// triangle pairs whichever queries came before (decide_pair starts each pair so, to make
+  /// every count independent of the threads and ranks).
+  void forget_last_crossing()
+  {
+    m_hit.reset();
+    m_only_perturbed.reset();
+  }
 
   /// Calls f(u, v) for every pair (item u of the moving mesh, item v of the static mesh, not
   /// two bare edges) whose boxes overlap for some translation in `translations`, until f
@@ -666,7 +674,7 @@ private:
   /// the answer is the same as testing every pair (it is an existence test; the order only
   /// changes which crossing is found and how many pairs are tested). The last crossing
   /// found by this filter is tried first: consecutive candidates are close, and many inner
-  /// ones cross there too (so triangle_pairs depends on how the work is spread over threads).
+  /// ones cross there too (forget_last_crossing() starts afresh).
   /// A crossing whose test looked at the perturbation does not stop the search, unless x is
   /// already known to have no other kind: see decided_without_perturbation().
   bool surfaces_cross()

@@ -23,6 +23,7 @@
 #include <CGAL_pmsum/internal/candidates.h>
 #include <CGAL_pmsum/internal/cd_filter.h>
 #include <CGAL_pmsum/internal/covering_net.h>
+#include <CGAL_pmsum/internal/distribution.h>
 #include <CGAL_pmsum/internal/octree_filter.h>
 #include <CGAL_pmsum/internal/trim_points.h>
 
@@ -108,6 +109,19 @@ struct Decision_counters
   }
 };
 
+/// The counters of a level's decisions and of their collision filters.
+struct Decision_totals
+{
+  Decision_counters counters;
+  Cd_statistics filter;
+  void add(const Cd_statistics& s)
+  {
+    filter.queries += s.queries;
+    filter.triangle_pairs += s.triangle_pairs;
+    filter.containment_tests += s.containment_tests;
+  }
+};
+
 /// What the decisions of one level read. Everything but `filter` is shared and read-only
 /// while pairs are decided in parallel.
 struct Decision_context
@@ -135,6 +149,42 @@ struct Pair_decision
   void clear() { tentative.clear(); trims.clear(); tested.clear(); }
 };
 
+/// A pair's decisions as bytes, for the other ranks (distribution.h).
+inline void write_bytes(Byte_writer& w, const Pair_decision& d)
+{
+  w.pod(std::uint64_t(d.tentative.size()));
+  for (const Tentative& t : d.tentative) w.pod(t);
+  w.pod(std::uint64_t(d.trims.size()));
+  for (const Trim_point& t : d.trims) {
+    w.pod(t.p); w.pod(t.q); w.pod(t.x); w.pod(t.radius); w.pod(t.direction);
+    w.pod(t.trim.p); w.pod(t.trim.q); w.rational(t.trim.lambda);
+    w.pod(t.trim.p2); w.pod(t.trim.q2); w.rational(t.trim.mu);
+    w.pod(t.trim.origin_p); w.pod(t.trim.origin_q);
+  }
+  w.pod(std::uint64_t(d.tested.size()));
+  for (const auto& [key, decision] : d.tested) { w.pod(key); w.pod(decision); }
+}
+
+/// Reads what write_bytes() wrote.
+inline void read_bytes(Byte_reader& r, Pair_decision& d)
+{
+  d.tentative.resize(std::size_t(r.pod<std::uint64_t>()));
+  for (Tentative& t : d.tentative) t = r.pod<Tentative>();
+  d.trims.resize(std::size_t(r.pod<std::uint64_t>()));
+  for (Trim_point& t : d.trims) {
+    t.p = r.pod<Sample>(); t.q = r.pod<Sample>(); t.x = r.pod<Point3>(); t.radius = r.pod<double>();
+    t.direction = r.pod<std::uint32_t>();
+    t.trim.p = r.pod<Sample>(); t.trim.q = r.pod<Sample>(); t.trim.lambda = r.rational();
+    t.trim.p2 = r.pod<Sample>(); t.trim.q2 = r.pod<Sample>(); t.trim.mu = r.rational();
+    t.trim.origin_p = r.pod<Feature>(); t.trim.origin_q = r.pod<Feature>();
+  }
+  d.tested.resize(std::size_t(r.pod<std::uint64_t>()));
+  for (auto& [key, decision] : d.tested) {
+    key = r.pod<Decision_cache::Key>();
+    decision = r.pod<std::uint32_t>();
+  }
+}
+
 /// The CD test of candidate (p, q) of pair fp: its direction, or `inner`.
 inline std::uint32_t cd_decision(Cd_filter& filter, const Candidate_pairs& pairs, const Feature_pair& fp,
                                  const Sample& p, const Sample& q)
@@ -155,6 +205,7 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
                         Pair_decision& out, Decision_counters& counters)
 {
   const Feature_pair& fp = c.pairs->pairs[i];
+  if (filter) filter->forget_last_crossing(); // the pair's counts: the same on any thread or rank
   const bool positions = c.octree || c.net;
   candidates.load(*c.sp, *c.sq, fp, positions);
   // Which samples the coarser level had (only their pairs can be in the cache).

@@ -3,13 +3,15 @@
 //
 // Parallel loops (TBB) that fall back to plain loops: for_each_index for the stages that
 // decide independent items (normal filter, octree filter), run_in_waves for the stage whose
-// results are committed in canonical order (decisions, covering net, output), and
+// results are committed in canonical order (decisions, covering net, output; shared among
+// ranks with distribution.h), and
 // Per_thread for the state each thread keeps (collision filters).
 
 #ifndef CGAL_PMSUM_INTERNAL_PARALLEL_H
 #define CGAL_PMSUM_INTERNAL_PARALLEL_H
 
 #include <CGAL_pmsum/exceptions.h>
+#include <CGAL_pmsum/internal/distribution.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -17,8 +19,11 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <chrono>
 #include <cstddef>
+#include <exception>
 #include <functional>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -82,32 +87,65 @@ private:
 #endif
 };
 
+/// The end of the wave of run_in_waves that starts at index `first`: the consecutive
+/// indices from `first` whose work reaches `wave_work`, at least one.
+inline std::size_t wave_end(const std::vector<std::size_t>& work, std::size_t first, std::size_t wave_work)
+{
+  std::size_t last = first, wave = 0;
+  while (last < work.size() && (wave < wave_work || last == first)) wave += work[last++];
+  return last;
+}
+
 /// Runs process(i, buffer) for every i in [0, work.size()), in waves of consecutive indices
 /// holding about `wave_work` of work each (work[i] for index i; at least one index a wave),
 /// in parallel within a wave if asked; each index has a cleared Buffer of its own. After
 /// each wave, on the calling thread: commit(i, buffer) for each index of the wave in order,
 /// then progress(fraction of the work done), which cancels (throws Operation_cancelled) by
-/// returning false. The waves do not depend on the number of threads.
+/// returning false. The waves depend neither on the number of threads nor on the ranks.
+/// With `ranks` (distribution.h), this rank processes its share of each wave and receives
+/// the other ranks' buffers before the commits; a cancellation ends every rank at the next
+/// exchange (one more exchange follows the last wave).
 template <class Buffer, class Process, class Commit>
 void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, bool parallel, const Process& process,
-                  const Commit& commit, const std::function<bool(double)>& progress)
+                  const Commit& commit, const std::function<bool(double)>& progress, Wave_ranks* ranks = nullptr)
 {
   std::size_t total = 0, done = 0;
   for (std::size_t w : work) total += w;
   std::vector<Buffer> buffers;
+  std::vector<std::size_t> mine;
+  bool cancelled = false;
   for (std::size_t first = 0; first < work.size();) {
-    std::size_t last = first, wave = 0;
-    while (last < work.size() && (wave < wave_work || last == first)) wave += work[last++];
+    const std::size_t last = wave_end(work, first, wave_work);
+    std::size_t wave = 0;
+    for (std::size_t i = first; i < last; ++i) wave += work[i];
     if (buffers.size() < last - first) buffers.resize(last - first);
-    for_each_index(last - first, parallel, [&](std::size_t k) {
-      buffers[k].clear();
-      process(first + k, buffers[k]);
-    });
+    for (std::size_t k = 0; k < last - first; ++k) buffers[k].clear();
+    if (ranks) mine = ranks->share(work, first, last);
+    else {
+      mine.resize(last - first);
+      std::iota(mine.begin(), mine.end(), first);
+    }
+    std::exception_ptr failure;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      for_each_index(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
+    } catch (...) {
+      if (!ranks) throw;
+      failure = std::current_exception();
+    }
+    if (ranks) {
+      ranks->add_deciding_seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      ranks->exchange(buffers, first, mine, failure, cancelled);
+    }
     for (std::size_t i = first; i < last; ++i) commit(i, buffers[i - first]);
     done += wave;
     first = last;
-    if (progress && !progress(total == 0 ? 1. : double(done) / double(total))) throw Operation_cancelled();
+    if (progress && !progress(total == 0 ? 1. : double(done) / double(total))) {
+      if (!ranks) throw Operation_cancelled();
+      cancelled = true;
+    }
   }
+  if (ranks) ranks->exchange(buffers, 0, {}, nullptr, cancelled);
 }
 
 } // namespace internal

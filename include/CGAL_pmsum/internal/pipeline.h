@@ -10,18 +10,21 @@
 //                       (cd_filter.h), in waves of feature pairs (parallel.h); then the pair's
 //                       trim points: trim_points.h (which lattice segments), segment_search.h
 //                       (their free parts, exactly)
+//      distribution.h   with a communicator: each rank decides its share of each wave
 //   4. covering_net.h   the output: the greedy (d/2, d)-net of the boundary candidates
 //   5. emit(p, q, direction, trim) for each output point (trim: null, or a trim-curve point), on the calling thread, in canonical order.
 
 #ifndef CGAL_PMSUM_INTERNAL_PIPELINE_H
 #define CGAL_PMSUM_INTERNAL_PIPELINE_H
 
+#include <CGAL_pmsum/Communicator.h>
 #include <CGAL_pmsum/Statistics.h>
 #include <CGAL_pmsum/exceptions.h>
 #include <CGAL_pmsum/internal/candidates.h>
 #include <CGAL_pmsum/internal/cd_filter.h>
 #include <CGAL_pmsum/internal/covering_net.h>
 #include <CGAL_pmsum/internal/decision.h>
+#include <CGAL_pmsum/internal/distribution.h>
 #include <CGAL_pmsum/internal/normal_filter.h>
 #include <CGAL_pmsum/internal/octree_filter.h>
 #include <CGAL_pmsum/internal/parallel.h>
@@ -63,6 +66,7 @@ struct Pipeline_options
   bool keep_vertex_sums = false; // with the net: vertex + vertex boundary points too, covered or not
   std::size_t max_candidates = std::size_t(-1);
   std::function<bool(double)> callback; // progress in [0, 1]; false cancels
+  Communicator* communicator = nullptr; // the ranks that share the decisions (distribution.h)
 };
 
 /// Stages 1 to 5 (see the file comment) on two prepared meshes, for one covering distance or
@@ -71,6 +75,34 @@ struct Pipeline_options
 /// samples with resolutions that are multiples of the coarser level's, so that every
 /// coarser candidate is a candidate again and its decision (boundary point with its
 /// direction, or inner) is reused instead of tested.
+/// Collective: the totals of every rank's decisions (`mine`: this rank's), and each rank's
+/// load into stats.ranks.
+inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& mine, Statistics& stats)
+{
+  Byte_writer w;
+  w.pod(mine.counters);
+  w.pod(mine.filter);
+  w.pod(ranks.load());
+  Decision_totals all;
+  stats.ranks.clear();
+  for (const std::string& bytes : ranks.gather(w.bytes())) {
+    Byte_reader r(bytes);
+    const auto counters = r.pod<Decision_counters>();
+    const auto filter = r.pod<Cd_statistics>();
+    const auto load = r.pod<Rank_load>();
+    all.counters.add(counters);
+    all.add(filter);
+    stats.ranks.push_back({load.feature_pairs, load.candidates, filter.queries - counters.trim_queries,
+                           load.seconds_deciding, load.seconds_exchanging});
+  }
+  return all;
+}
+
+/// The work of a wave of decisions, for `total` candidates: about 1/2000 of them, small
+/// enough that few candidates are tested in vain (covered by an earlier pair of their wave:
+/// hooks at d = 1% 2% of the tests, against 20% with 1/200), large enough for the threads.
+inline std::size_t wave_work(std::size_t total) { return (std::max<std::size_t>)(1, total / 2000); }
+
 template <class ConcurrencyTag>
 class Pipeline
 {
@@ -180,39 +212,45 @@ public:
     context.d = d;
     context.trim_points = m_o.use_trim_points;
     context.islands = m_o.search_islands;
+    // The filters of the decisions, and the commits' own: the counters of the decisions are
+    // added up over the ranks, those of the commits (the same on every rank) counted once.
     std::optional<Per_thread<Cd_filter>> filters;
-    if (m_geometry) filters.emplace(parallel, &*m_geometry);
+    std::optional<Cd_filter> commit_filter;
+    if (m_geometry) {
+      filters.emplace(parallel, &*m_geometry);
+      commit_filter.emplace(&*m_geometry);
+    }
     Per_thread<Pair_candidates> candidates(parallel);
     Per_thread<Decision_counters> counters(parallel);
     Decision_counters commit_counters;
-    // Waves of about 1/2000 of the work, at least one pair each: small enough that few
-    // candidates are tested in vain (covered by an earlier pair of their wave: hooks at d = 1%
-    // 2% of the tests, against 20% with 1/200), large enough for the threads.
+    std::optional<Wave_ranks> ranks;
+    if (m_o.communicator) ranks.emplace(*m_o.communicator);
     run_in_waves<Pair_decision>(
-      work, (std::max<std::size_t>)(1, total / 2000), parallel,
+      work, wave_work(total), parallel,
       [&](std::size_t i, Pair_decision& decided) {
         decide_pair(context, i, filters ? &filters->local() : nullptr, candidates.local(), decided, counters.local());
       },
       [&](std::size_t i, Pair_decision& decided) {
-        commit_pair(context, i, decided, net ? &*net : nullptr, filters ? &filters->local() : nullptr,
+        commit_pair(context, i, decided, net ? &*net : nullptr, commit_filter ? &*commit_filter : nullptr,
                     commit_counters, m_coarse_to_fine ? &m_cache : nullptr, output_point);
       },
-      m_o.callback);
-    counters.for_each([&](const Decision_counters& c) { commit_counters.add(c); });
-    stats.candidates_reused = commit_counters.reused;
-    stats.candidates_certified = commit_counters.certified;
-    stats.candidates_covered = commit_counters.covered;
-    stats.trim_segments = commit_counters.trim_segments;
-    stats.island_cells = commit_counters.island_cells;
-    stats.corner_tests = commit_counters.corner_tests;
-    stats.trim_queries = commit_counters.trim_queries;
-    if (filters)
-      filters->for_each([&](const Cd_filter& f) {
-        stats.cd_queries += f.statistics().queries;
-        stats.triangle_pairs += f.statistics().triangle_pairs;
-        stats.containment_tests += f.statistics().containment_tests;
-      });
-    stats.cd_queries -= stats.trim_queries;
+      m_o.callback, ranks ? &*ranks : nullptr);
+    Decision_totals decided;
+    counters.for_each([&](const Decision_counters& c) { decided.counters.add(c); });
+    if (filters) filters->for_each([&](const Cd_filter& f) { decided.add(f.statistics()); });
+    if (ranks) decided = add_over_ranks(*ranks, decided, stats);
+    decided.counters.add(commit_counters);
+    if (commit_filter) decided.add(commit_filter->statistics());
+    stats.candidates_reused = decided.counters.reused;
+    stats.candidates_certified = decided.counters.certified;
+    stats.candidates_covered = decided.counters.covered;
+    stats.trim_segments = decided.counters.trim_segments;
+    stats.island_cells = decided.counters.island_cells;
+    stats.corner_tests = decided.counters.corner_tests;
+    stats.trim_queries = decided.counters.trim_queries;
+    stats.cd_queries = decided.filter.queries - stats.trim_queries;
+    stats.triangle_pairs = decided.filter.triangle_pairs;
+    stats.containment_tests = decided.filter.containment_tests;
     stats.seconds_cd_filter = seconds_since(start);
     m_output.swap(output);
   }

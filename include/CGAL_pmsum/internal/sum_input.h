@@ -50,7 +50,7 @@ constexpr bool has_algorithm_parameter()
          has_parameter<NP, internal_np::negate_first_mesh_t>() || has_parameter<NP, internal_np::statistics_t>() ||
          has_parameter<NP, internal_np::maximum_number_of_candidates_t>() ||
          has_parameter<NP, internal_np::check_overlaps_t>() || has_parameter<NP, internal_np::roadmap_neighbors_t>() ||
-         has_parameter<NP, internal_np::mesh_statistics_t>() ||
+         has_parameter<NP, internal_np::mesh_statistics_t>() || has_parameter<NP, internal_np::communicator_t>() ||
          has_parameter<NP, CGAL::internal_np::callback_t>();
 }
 
@@ -105,6 +105,7 @@ struct Sum_settings
     options.max_candidates =
       choose_parameter(get_parameter(np, internal_np::maximum_number_of_candidates), std::size_t(-1));
     options.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+    options.communicator = choose_parameter(get_parameter(np, internal_np::communicator), static_cast<Communicator*>(nullptr));
     negate_p = negation == Negation::always || choose_parameter(get_parameter(np, internal_np::negate_first_mesh), false);
     check_overlaps = choose_parameter(get_parameter(np, internal_np::check_overlaps), true);
     stats = Statistics();

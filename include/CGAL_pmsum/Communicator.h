@@ -1,0 +1,42 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The communicator interface of a sum computed by several processes (named parameter
+// `communicator`): one collective operation, all-gather of bytes. The package holds no MPI
+// symbol; CGAL_pmsum/MPI_communicator.h implements it over an MPI_Comm.
+
+#ifndef CGAL_PMSUM_COMMUNICATOR_H
+#define CGAL_PMSUM_COMMUNICATOR_H
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+
+/// \ingroup PkgPointMinkowskiSumSupport
+/// The processes (ranks) that compute one sum together, given to an entry point with the
+/// named parameter `communicator(&c)`. Every rank calls the entry point with the same
+/// meshes, `d` and parameters; each rank decides about 1/size() of the feature pairs, and
+/// every rank returns the whole output, the same as one process's, point for point.
+/// Implement it over your transport (CGAL::Pmsum::MPI_communicator for MPI).
+class Communicator
+{
+public:
+  virtual ~Communicator() = default;
+  /// This process's rank.
+  /// \returns a number in [0, size())
+  virtual int rank() const = 0;
+  /// The number of ranks.
+  /// \returns the number of ranks, at least 1
+  virtual int size() const = 0;
+  /// Collective: every rank passes its bytes and receives every rank's, in rank order.
+  /// \param bytes this rank's message (any size, possibly empty)
+  /// \returns the messages of ranks 0, 1, ..., size() - 1
+  virtual std::vector<std::string> all_gather(const std::string& bytes) = 0;
+};
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_COMMUNICATOR_H

@@ -1,0 +1,76 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// CGAL::Pmsum::Communicator over MPI. Include it only in an MPI program (link MPI::MPI_CXX);
+// the rest of the package does not include <mpi.h>.
+
+#ifndef CGAL_PMSUM_MPI_COMMUNICATOR_H
+#define CGAL_PMSUM_MPI_COMMUNICATOR_H
+
+#include <CGAL_pmsum/Communicator.h>
+
+#include <mpi.h>
+
+#include <climits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+
+/// \ingroup PkgPointMinkowskiSumSupport
+/// The ranks of an MPI communicator (MPI must be initialised; the sum is computed on the
+/// thread that calls it, so MPI_THREAD_FUNNELED is enough).
+/// \code
+/// CGAL::Pmsum::MPI_communicator world(MPI_COMM_WORLD);
+/// CGAL::point_minkowski_sum(P, Q, d, out, CGAL::parameters::communicator(&world));
+/// \endcode
+class MPI_communicator : public Communicator
+{
+public:
+  /// The ranks of `comm` (not duplicated: keep it alive while in use).
+  /// \param comm an MPI communicator
+  explicit MPI_communicator(MPI_Comm comm) : m_comm(comm)
+  {
+    MPI_Comm_rank(comm, &m_rank);
+    MPI_Comm_size(comm, &m_size);
+  }
+  /// This process's rank in the communicator.
+  /// \returns a number in [0, size())
+  int rank() const override { return m_rank; }
+  /// The communicator's size.
+  /// \returns the number of ranks
+  int size() const override { return m_size; }
+  /// MPI_Allgather of the sizes, then MPI_Allgatherv of the bytes (up to 2 GiB in all).
+  /// \param bytes this rank's message
+  /// \returns the messages of ranks 0, 1, ..., size() - 1
+  std::vector<std::string> all_gather(const std::string& bytes) override
+  {
+    if (bytes.size() > std::size_t(INT_MAX)) throw std::length_error("MPI_communicator: a message above 2 GiB");
+    const int mine = int(bytes.size());
+    const std::size_t n = std::size_t(m_size);
+    std::vector<int> sizes(n), offsets(n);
+    MPI_Allgather(&mine, 1, MPI_INT, sizes.data(), 1, MPI_INT, m_comm);
+    long long total = 0;
+    for (int r = 0; r < m_size; ++r) {
+      offsets[std::size_t(r)] = int(total);
+      total += sizes[std::size_t(r)];
+    }
+    if (total > INT_MAX) throw std::length_error("MPI_communicator: messages above 2 GiB");
+    std::string all(std::size_t(total), '\0');
+    MPI_Allgatherv(bytes.data(), mine, MPI_BYTE, &all[0], sizes.data(), offsets.data(), MPI_BYTE, m_comm);
+    std::vector<std::string> out;
+    for (int r = 0; r < m_size; ++r) out.push_back(all.substr(std::size_t(offsets[std::size_t(r)]), std::size_t(sizes[std::size_t(r)])));
+    return out;
+  }
+
+private:
+  MPI_Comm m_comm;
+  int m_rank = 0, m_size = 1;
+};
+
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_MPI_COMMUNICATOR_H

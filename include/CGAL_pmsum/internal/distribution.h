@@ -1,0 +1,229 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stage 3 across processes (named parameter `communicator`). The decisions run in waves of
+// feature pairs (parallel.h), and the waves do not depend on the number of processes: each
+// rank decides its share of a wave's pairs (largest first, to the least loaded rank), the
+// ranks exchange their decisions, and every rank commits the whole wave in canonical order.
+// Every rank thus holds the same net and output as one process, point for point, and the
+// counters summed over the ranks are one process's.
+//
+// A failure or a cancellation on one rank travels with the next exchange, so that every
+// rank ends with it instead of waiting: the failing rank rethrows its own exception, the
+// others throw Rank_failed.
+// Messages are plain bytes (Byte_writer, Byte_reader), in the layout of the machine: the
+// ranks must run the same build on the same architecture.
+
+#ifndef CGAL_PMSUM_INTERNAL_DISTRIBUTION_H
+#define CGAL_PMSUM_INTERNAL_DISTRIBUTION_H
+
+#include <CGAL_pmsum/Communicator.h>
+#include <CGAL_pmsum/exceptions.h>
+
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// Appends values to a message.
+class Byte_writer
+{
+public:
+  template <class T>
+  void pod(const T& v)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "Byte_writer::pod: a trivially copyable type");
+    m_bytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
+  void text(const std::string& s)
+  {
+    pod(std::uint64_t(s.size()));
+    m_bytes += s;
+  }
+  void rational(const CGAL::Exact_rational& q)
+  {
+    std::ostringstream os;
+    os << q;
+    text(os.str());
+  }
+  std::string& bytes() { return m_bytes; }
+
+private:
+  std::string m_bytes;
+};
+
+/// Reads values back from a message, in the order they were written.
+class Byte_reader
+{
+public:
+  explicit Byte_reader(const std::string& bytes) : m_bytes(bytes) {}
+  template <class T>
+  T pod()
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "Byte_reader::pod: a trivially copyable type");
+    T v;
+    take(&v, sizeof(T));
+    return v;
+  }
+  std::string text()
+  {
+    const std::uint64_t n = pod<std::uint64_t>();
+    if (n > m_bytes.size() - m_at) throw std::length_error("Byte_reader: truncated message");
+    std::string s = m_bytes.substr(m_at, std::size_t(n));
+    m_at += std::size_t(n);
+    return s;
+  }
+  CGAL::Exact_rational rational()
+  {
+    std::istringstream is(text());
+    CGAL::Exact_rational q;
+    is >> q;
+    return q;
+  }
+  bool done() const { return m_at == m_bytes.size(); }
+
+private:
+  void take(void* to, std::size_t n)
+  {
+    if (n > m_bytes.size() - m_at) throw std::length_error("Byte_reader: truncated message");
+    std::memcpy(to, m_bytes.data() + m_at, n);
+    m_at += n;
+  }
+  const std::string& m_bytes;
+  std::size_t m_at = 0;
+};
+
+/// The rank of each index of [first, last): largest work first (ties: lower index), each to
+/// the rank least loaded in this wave, ties to the rank with the least work so far (`so_far`,
+/// updated), then the lower rank. The ranks wait for each other after every wave, so the
+/// wave's largest load is what counts; the totals are balanced too. The same on every rank.
+inline std::vector<int> wave_owners(const std::vector<std::size_t>& work, std::size_t first, std::size_t last,
+                                    std::vector<std::size_t>& so_far)
+{
+  std::vector<std::size_t> order(last - first);
+  std::iota(order.begin(), order.end(), first);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return work[a] > work[b]; });
+  std::vector<std::size_t> load(so_far.size(), 0);
+  std::vector<int> owner(last - first, 0);
+  for (std::size_t i : order) {
+    std::size_t best = 0;
+    for (std::size_t r = 1; r < load.size(); ++r)
+      if (load[r] < load[best] || (load[r] == load[best] && so_far[r] < so_far[best])) best = r;
+    owner[i - first] = int(best);
+    load[best] += work[i];
+    so_far[best] += work[i];
+  }
+  return owner;
+}
+
+/// One rank's share of the decisions, as gathered into Statistics::ranks.
+struct Rank_load
+{
+  std::size_t feature_pairs = 0, candidates = 0;
+  double seconds_deciding = 0, seconds_exchanging = 0;
+};
+
+/// This rank's part in run_in_waves (parallel.h): which indices of a wave it processes, and
+/// the exchange after them. Buffer needs write_bytes(Byte_writer&, const Buffer&) and
+/// read_bytes(Byte_reader&, Buffer&).
+class Wave_ranks
+{
+public:
+  explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_so_far(std::size_t(comm.size()), 0) {}
+  Communicator& communicator() const { return m_comm; }
+  const Rank_load& load() const { return m_load; }
+  void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
+
+  /// This rank's indices of [first, last), in increasing order.
+  std::vector<std::size_t> share(const std::vector<std::size_t>& work, std::size_t first, std::size_t last)
+  {
+    const std::vector<int> owner = wave_owners(work, first, last, m_so_far);
+    std::vector<std::size_t> mine;
+    for (std::size_t i = first; i < last; ++i)
+      if (owner[i - first] == m_comm.rank()) {
+        mine.push_back(i);
+        ++m_load.feature_pairs;
+        m_load.candidates += work[i];
+      }
+    return mine;
+  }
+
+  /// Collective: sends the buffers of `mine` (indices from `first`), receives the others'
+  /// into `buffers`. Every rank then throws if a rank failed (`failure`) or was cancelled.
+  template <class Buffer>
+  void exchange(std::vector<Buffer>& buffers, std::size_t first, const std::vector<std::size_t>& mine,
+                std::exception_ptr failure, bool cancelled)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Byte_writer w;
+    w.pod(std::uint8_t(failure ? 2 : cancelled ? 1 : 0));
+    if (failure) w.text(message_of(failure));
+    else
+      for (std::size_t i : mine) {
+        w.pod(std::uint64_t(i));
+        write_bytes(w, buffers[i - first]);
+      }
+    const std::vector<std::string> all = m_comm.all_gather(w.bytes());
+    m_load.seconds_exchanging += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    bool any_cancelled = false;
+    for (int r = 0; r < int(all.size()); ++r) {
+      Byte_reader in(all[std::size_t(r)]);
+      const auto status = in.pod<std::uint8_t>();
+      if (status == 2) {
+        if (failure) std::rethrow_exception(failure);
+        throw Rank_failed(r, in.text());
+      }
+      any_cancelled = any_cancelled || status == 1;
+    }
+    if (failure) std::rethrow_exception(failure); // (not reached: this rank's status is 2)
+    if (any_cancelled) throw Operation_cancelled();
+    for (int r = 0; r < int(all.size()); ++r) {
+      if (r == m_comm.rank()) continue;
+      Byte_reader in(all[std::size_t(r)]);
+      in.pod<std::uint8_t>();
+      while (!in.done()) {
+        const std::size_t i = std::size_t(in.pod<std::uint64_t>());
+        if (i < first || i - first >= buffers.size()) throw std::length_error("Wave_ranks: an index outside the wave");
+        read_bytes(in, buffers[i - first]);
+      }
+    }
+  }
+
+  /// Collective: every rank's `bytes`, in rank order.
+  std::vector<std::string> gather(const std::string& bytes) { return m_comm.all_gather(bytes); }
+
+private:
+  static std::string message_of(std::exception_ptr e)
+  {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::exception& x) {
+      return x.what();
+    } catch (...) {
+      return "unknown error";
+    }
+  }
+
+  Communicator& m_comm;
+  std::vector<std::size_t> m_so_far; // every rank's work so far
+  Rank_load m_load;
+};
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_DISTRIBUTION_H
