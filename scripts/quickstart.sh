@@ -9,8 +9,10 @@ mode=${1:-demo}
 
 packages=(g++ make cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev libtbb-dev catch2 python3)
 # test: clang and its runtime libraries with AddressSanitizer, UBSan and libFuzzer; pybind11,
-# numpy and pytest for the Python module's tests; Doxygen for the reference manual's check
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest doxygen)
+# numpy and pytest for the Python module's tests; Doxygen for the reference manual's check;
+# Open MPI for the tool's MPI build (mpirun -np 2 against one process)
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest doxygen
+                                 libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -26,10 +28,11 @@ fi
 jobs=$(nproc 2>/dev/null || echo 2)
 phase() { echo "quickstart: $1: $(( SECONDS - phase_start )) s"; phase_start=$SECONDS; }
 phase_start=$SECONDS
-# test: the Python module and the reference manual's check are asked for, so that a missing
-# dependency (or an earlier demo configuration without them) fails instead of skipping them
+# test: the Python module, the reference manual's check and the MPI build are asked for, so
+# that a missing dependency (or an earlier demo configuration without them) fails instead of
+# skipping them
 extra=()
-[ "$mode" = test ] && extra=(-DPMSUM_BUILD_PYTHON=ON -DPMSUM_CHECK_DOCS=ON)
+[ "$mode" = test ] && extra=(-DPMSUM_BUILD_PYTHON=ON -DPMSUM_CHECK_DOCS=ON -DCGAL_PMSUM_WITH_MPI=ON)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${extra[@]}" > /dev/null
 if [ "$mode" = demo ]; then
   cmake --build build -j "$jobs" --target pmsum_cli   # the demo runs the tool only

@@ -287,7 +287,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.d_argument = args.number("-d");
   if (!(in.d_argument > 0) || !std::isfinite(in.d_argument))
     throw Usage_error("-d must be a positive number, got " + args.values.at("-d"));
-  in.quiet = args.flag("--quiet");
+  in.quiet = args.flag("--quiet") || !is_main_rank(); // rank 0 alone shows progress and messages
   in.relative = args.flag("--relative");
   in.negate = args.flag("--negate-p");
   in.normal_filter = !args.flag("--no-normal-filter");
@@ -365,7 +365,8 @@ inline auto sum_parameters(const Sum_input& in, CGAL::Pmsum::Statistics& stats,
     .negate_first_mesh(in.negate)
     .statistics(stats)
     .maximum_number_of_candidates(limit)
-    .callback(callback);
+    .callback(callback)
+    .communicator(world_communicator());
 }
 
 /// The progress callback of a run: the bar (unless --quiet) and Sum_input::callback.
@@ -467,6 +468,19 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("trim_queries", stats.trim_queries)
     .integer("trim_segments", stats.trim_segments).integer("island_cells", stats.island_cells).integer("trim_points", stats.trim_points)
     .integer("output_points", stats.output_points);
+  if (!stats.ranks.empty()) {
+    // mpirun: each rank's share of the decisions
+    std::string list = "[";
+    for (std::size_t r = 0; r < stats.ranks.size(); ++r) {
+      const CGAL::Pmsum::Rank_statistics& s = stats.ranks[r];
+      Json jr;
+      jr.integer("rank", r).integer("feature_pairs", s.feature_pairs).integer("candidates", s.candidates)
+        .integer("cd_queries", s.cd_queries).num("seconds_deciding", s.seconds_deciding)
+        .num("seconds_exchanging", s.seconds_exchanging);
+      list += (r ? ", " : "") + jr.dump(2);
+    }
+    j.integer("processes", stats.ranks.size()).add("ranks", list + "]");
+  }
   return j;
 }
 

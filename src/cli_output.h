@@ -12,6 +12,7 @@
 #define CGAL_PMSUM_CLI_OUTPUT_H
 
 #include "cli_errors.h"
+#include "cli_ranks.h"
 
 #include <fcntl.h>
 #include <limits.h>
@@ -72,9 +73,11 @@ class Output_file
 {
 public:
   /// `what` names the option ("-o", "--json"); `inputs` are the command's input files.
+  /// On a rank other than 0 (cli_ranks.h) it does nothing: rank 0 writes the outputs.
   Output_file(const std::string& path, const std::string& what, const std::vector<std::string>& inputs)
     : m_path(path), m_what(what)
   {
+    if (!is_main_rank()) return;
     namespace fs = std::filesystem;
     std::error_code ec;
     if (path.empty()) throw Usage_error(what + " needs a file name");
@@ -122,6 +125,7 @@ public:
   template <class Write>
   void write(Write&& write, std::ios::openmode mode = std::ios::out)
   {
+    if (!is_main_rank()) return;
     if (m_temporary.empty()) throw Error("cannot write '" + m_path + "' twice");
     {
       std::ofstream out(m_temporary, mode | std::ios::trunc);

@@ -98,10 +98,10 @@ int command_mesh(int argc, char** argv)
   check_mesh_path(out_path);
   std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
   if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
-  Output_files files(outputs, args.positional);
+  Output_files files = agreed([&] { return Output_files(outputs, args.positional); });
 
   const auto t_start = std::chrono::steady_clock::now();
-  const Sum_input in = read_sum_input(args);
+  const Sum_input in = agreed([&] { return read_sum_input(args); });
   CGAL::Pmsum::Mesh_statistics ms;
   const Mesh mesh = compute_mesh(in, ms);
   const auto t_write = std::chrono::steady_clock::now();

@@ -74,10 +74,10 @@ int command_sum(int argc, char** argv)
       outputs.push_back({"-o level " + std::to_string(k), level_path(k)});
   }
   if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
-  Output_files files(outputs, args.positional);
+  Output_files files = agreed([&] { return Output_files(outputs, args.positional); });
 
   const auto t_start = std::chrono::steady_clock::now();
-  const Sum_input in = read_sum_input(args);
+  const Sum_input in = agreed([&] { return read_sum_input(args); });
   CGAL::Pmsum::Statistics stats;
   // Coarse to fine (--levels): each coarser level is written as it completes.
   std::vector<std::string> levels;
@@ -158,10 +158,10 @@ int command_offset(int argc, char** argv)
   if (!(error > 0 && error < 1)) throw Usage_error("--sphere-error must be in (0, 1)");
   std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
   if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
-  Output_files files(outputs, args.positional);
-  const bool quiet = args.flag("--quiet");
+  Output_files files = agreed([&] { return Output_files(outputs, args.positional); });
+  const bool quiet = args.flag("--quiet") || !is_main_rank();
   const auto start = std::chrono::steady_clock::now();
-  Mesh P = read_mesh(args.positional[0], "MESH", quiet);
+  Mesh P = agreed([&] { return read_mesh(args.positional[0], "MESH", quiet); });
   if (args.flag("--relative")) {
     const double diag = sum_diagonal(PMP::bbox(P));
     r *= diag;
@@ -468,11 +468,16 @@ int main(int argc, char** argv)
 {
   using namespace pmsum_cli;
   install_signal_cleanup();
+  const Ranks_session ranks(argc, argv); // mpirun: every rank runs the command (cli_ranks.h)
+  std::ostream& err = error_stream();    // rank 0 alone prints errors
   try {
-    if (argc < 2) { std::cerr << usage_text; return 2; }
+    if (argc < 2) { err << usage_text; return 2; }
     const std::string command = argv[1];
     if (command == "--help" || command == "-h" || command == "help") { std::cout << usage_text; return 0; }
     if (command == "--version") { std::cout << "pmsum " << CGAL_PMSUM_VERSION << " (CGAL_pmsum, CGAL " << CGAL_VERSION_STR << ")\n"; return 0; }
+    if (world_communicator() && command != "sum" && command != "offset" && command != "validate" && command != "mesh")
+      throw Usage_error("under mpirun, only sum, offset, validate and mesh share their work; run " + command +
+                        " as one process");
     if (command == "sum") return command_sum(argc, argv);
     if (command == "validate") return command_validate(argc, argv);
     if (command == "mesh") return command_mesh(argc, argv);
@@ -483,32 +488,32 @@ int main(int argc, char** argv)
     if (command == "plan") return command_plan(argc, argv);
     throw Unknown_command("unknown command '" + command + "'");
   } catch (const Unknown_command& e) {
-    std::cerr << "pmsum: " << e.what() << " (see pmsum --help)\n";
+    err << "pmsum: " << e.what() << " (see pmsum --help)\n";
     return 2;
   } catch (const Usage_error& e) {
-    std::cerr << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")
+    err << "pmsum: " << e.what() << " (see pmsum " << (argc > 1 ? std::string(argv[1]) + " " : "")
               << "--help)\n";
     return 2;
   } catch (const Refused& e) {
-    std::cerr << "pmsum: " << e.what() << "\n";
+    err << "pmsum: " << e.what() << "\n";
     return 3;
   } catch (const CGAL::Pmsum::Too_large& e) {
-    std::cerr << "pmsum: refused: " << e.what() << " (use a larger -d)\n";
+    err << "pmsum: refused: " << e.what() << " (use a larger -d)\n";
     return 3;
   } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
-    std::cerr << "pmsum: error: " << e.what() << "\n";
+    err << "pmsum: error: " << e.what() << "\n";
     return 6;
   } catch (const CGAL::Pmsum::Invalid_input& e) {
-    std::cerr << "pmsum: error: " << e.what() << "\n";
+    err << "pmsum: error: " << e.what() << "\n";
     return 1;
   } catch (const Error& e) {
-    std::cerr << "pmsum: error: " << e.what() << "\n";
+    err << "pmsum: error: " << e.what() << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
-    std::cerr << "pmsum: error: out of memory\n";
+    err << "pmsum: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "pmsum: error: " << e.what() << "\n";
+    err << "pmsum: error: " << e.what() << "\n";
     return 1;
   }
 }

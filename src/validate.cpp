@@ -68,9 +68,9 @@ int command_validate(int argc, char** argv)
   }
   std::vector<std::string> inputs = args.positional;
   if (args.has("--exact")) inputs.push_back(args.values.at("--exact"));
-  Output_files files(outputs, inputs);
+  Output_files files = agreed([&] { return Output_files(outputs, inputs); });
   const auto t_start = std::chrono::steady_clock::now();
-  const Sum_input in = read_sum_input(args);
+  const Sum_input in = agreed([&] { return read_sum_input(args); });
 
   // Ours.
   CGAL::Pmsum::Statistics stats;
@@ -78,6 +78,9 @@ int command_validate(int argc, char** argv)
   const std::vector<Record> records = compute_sum(in, stats);
   const double ours_seconds = seconds_since(t_ours);
   if (args.has("--points")) write_points(files["--points"], oriented_points(records));
+  // mpirun: the other ranks have shared the sum; the checks are rank 0's (with --mesh, the
+  // mesh's sum is shared too, so they go on).
+  if (!is_main_rank() && !args.flag("--mesh")) return 0;
 
   // The exact boundary.
   std::unique_ptr<CGAL::Pmsum::Nef_minkowski_sum_reference> ref;
