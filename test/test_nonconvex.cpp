@@ -378,6 +378,7 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
 
 // --- Ranks (named parameter `communicator`): threads stand for the processes. ------------
 #include <CGAL_pmsum/Communicator.h>
+#include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
 #include "shape_presets.h"
 
 #include <condition_variable>
@@ -422,22 +423,21 @@ private:
   std::condition_variable m_changed;
 };
 
-/// P + Q computed by k ranks: each rank's records and statistics.
-std::vector<Result> run_on_ranks(const Soup& P, const Soup& Q, double d, int k,
-                                 const std::function<bool(int, double)>& callback = {})
+/// f(communicator, rank) on k thread-ranks: each rank's result, or each rank's error message
+/// (all empty if none failed).
+template <class T>
+std::pair<std::vector<T>, std::vector<std::string>> on_ranks(int k, const std::function<T(CGAL::Pmsum::Communicator&, int)>& f)
 {
   Thread_ranks ranks(k);
   const std::size_t n = std::size_t(k);
-  std::vector<Result> results(n);
+  std::vector<T> results(n);
   std::vector<std::string> errors(n);
   std::vector<std::thread> threads;
   for (int r = 0; r < k; ++r)
     threads.emplace_back([&, r] {
       Thread_ranks::Rank me(&ranks, r);
       try {
-        auto np = CGAL::parameters::communicator(&me);
-        if (callback) results[std::size_t(r)] = run(P, Q, d, np.callback(std::function<bool(double)>([&, r](double f) { return callback(r, f); })));
-        else results[std::size_t(r)] = run(P, Q, d, np);
+        results[std::size_t(r)] = f(me, r);
       } catch (const CGAL::Pmsum::Operation_cancelled&) {
         errors[std::size_t(r)] = "cancelled";
       } catch (const std::exception& e) {
@@ -445,9 +445,34 @@ std::vector<Result> run_on_ranks(const Soup& P, const Soup& Q, double d, int k,
       }
     });
   for (std::thread& t : threads) t.join();
+  return {results, errors};
+}
+
+/// P + Q computed by k ranks: each rank's records and statistics (throws the first error).
+std::vector<Result> run_on_ranks(const Soup& P, const Soup& Q, double d, int k,
+                                 const std::function<bool(int, double)>& callback = {})
+{
+  const auto [results, errors] = on_ranks<Result>(k, [&](CGAL::Pmsum::Communicator& me, int r) {
+    auto np = CGAL::parameters::communicator(&me);
+    if (!callback) return run(P, Q, d, np);
+    return run(P, Q, d, np.callback(std::function<bool(double)>([&, r](double f) { return callback(r, f); })));
+  });
   for (const std::string& e : errors)
     if (!e.empty()) throw std::runtime_error(e);
   return results;
+}
+
+/// The points of each level of P + Q, coarse to fine (d_levels), on `ranks` (nullptr: one process).
+std::vector<std::vector<IK::Point_3>> levels(const Soup& P, const Soup& Q, const std::vector<double>& d_levels,
+                                             CGAL::Pmsum::Communicator* ranks)
+{
+  const Mesh mp = to_mesh<Mesh>(P), mq = to_mesh<Mesh>(Q);
+  std::vector<std::vector<IK::Point_3>> out;
+  CGAL::point_minkowski_sum_coarse_to_fine(
+    mp, mq, d_levels,
+    [&](std::size_t, const CGAL::Pmsum::Statistics&, std::vector<Record>&& level) { out.push_back(all_points(level)); },
+    CGAL::parameters::communicator(ranks));
+  return out;
 }
 
 } // namespace
@@ -495,6 +520,33 @@ TEST_CASE("ranks: k ranks give one process's output and counts", "[ranks]")
       }
     }
   }
+}
+
+TEST_CASE("ranks: coarse to fine, every level is one process's (the decisions reused travel too)", "[ranks]")
+{
+  const Soup P = pmsum_shapes::shape_preset("knot"), Q = pmsum_shapes::shape_preset("tetrahedron");
+  const std::vector<double> ds = {0.4, 0.2};
+  const auto one = levels(P, Q, ds, nullptr);
+  REQUIRE(one.size() == 2);
+  const auto [many, errors] = on_ranks<std::vector<std::vector<IK::Point_3>>>(
+    2, [&](CGAL::Pmsum::Communicator& me, int) { return levels(P, Q, ds, &me); });
+  for (std::size_t r = 0; r < 2; ++r) {
+    CHECK(errors[r].empty());
+    CHECK(many[r] == one);
+  }
+}
+
+TEST_CASE("ranks: a failure on one rank ends every rank, with its message", "[ranks]")
+{
+  const Soup P = pmsum_shapes::shape_preset("knot"), Q = pmsum_shapes::shape_preset("tetrahedron");
+  const auto [results, errors] = on_ranks<Result>(2, [&](CGAL::Pmsum::Communicator& me, int r) {
+    return run(P, Q, 0.15, CGAL::parameters::communicator(&me).callback(std::function<bool(double)>([r](double f) {
+      if (r == 1 && f > 0.5) throw std::runtime_error("injected failure");
+      return true;
+    })));
+  });
+  CHECK(errors[1] == "injected failure");
+  CHECK(errors[0] == "rank 1: injected failure");
 }
 
 TEST_CASE("ranks: a cancellation on one rank ends every rank", "[ranks]")

@@ -17,8 +17,11 @@ namespace Pmsum {
 /// \ingroup PkgPointMinkowskiSumSupport
 /// The processes (ranks) that compute one sum together, given to an entry point with the
 /// named parameter `communicator(&c)`. Every rank calls the entry point with the same
-/// meshes, `d` and parameters; each rank decides about 1/size() of the feature pairs, and
-/// every rank returns the whole output, the same as one process's, point for point.
+/// meshes, `d` and parameters (a fingerprint of the candidates is compared: different inputs
+/// throw `Invalid_input` on every rank); each rank decides its share of the feature pairs, and
+/// every rank returns the whole output, the same as one process's, point for point. A failure
+/// during the decisions on one rank ends every rank (the others throw `Rank_failed`); one
+/// before them (e.g. out of memory while reading) is not shared: end every rank then.
 /// Implement it over your transport (CGAL::Pmsum::MPI_communicator for MPI).
 class Communicator
 {

@@ -47,13 +47,15 @@ public:
   /// \returns the messages of ranks 0, 1, ..., size() - 1
   std::vector<std::string> all_gather(const std::string& bytes) override
   {
-    if (bytes.size() > std::size_t(INT_MAX)) throw std::length_error("MPI_communicator: a message above 2 GiB");
-    const int mine = int(bytes.size());
+    // A message too large for MPI's int counts fails on every rank alike (size -1).
+    const int mine = bytes.size() > std::size_t(INT_MAX) ? -1 : int(bytes.size());
     const std::size_t n = std::size_t(m_size);
     std::vector<int> sizes(n), offsets(n);
     MPI_Allgather(&mine, 1, MPI_INT, sizes.data(), 1, MPI_INT, m_comm);
     long long total = 0;
     for (int r = 0; r < m_size; ++r) {
+      if (sizes[std::size_t(r)] < 0) total = LLONG_MAX;
+      if (total == LLONG_MAX) break;
       offsets[std::size_t(r)] = int(total);
       total += sizes[std::size_t(r)];
     }

@@ -153,7 +153,7 @@ struct Pair_decision
 inline void write_bytes(Byte_writer& w, const Pair_decision& d)
 {
   w.pod(std::uint64_t(d.tentative.size()));
-  for (const Tentative& t : d.tentative) w.pod(t);
+  for (const Tentative& t : d.tentative) { w.pod(t.p); w.pod(t.q); w.pod(t.x); w.pod(t.direction); w.pod(t.kept); }
   w.pod(std::uint64_t(d.trims.size()));
   for (const Trim_point& t : d.trims) {
     w.pod(t.p); w.pod(t.q); w.pod(t.x); w.pod(t.radius); w.pod(t.direction);
@@ -169,7 +169,10 @@ inline void write_bytes(Byte_writer& w, const Pair_decision& d)
 inline void read_bytes(Byte_reader& r, Pair_decision& d)
 {
   d.tentative.resize(std::size_t(r.pod<std::uint64_t>()));
-  for (Tentative& t : d.tentative) t = r.pod<Tentative>();
+  for (Tentative& t : d.tentative) {
+    t.p = r.pod<Sample>(); t.q = r.pod<Sample>(); t.x = r.pod<Point3>();
+    t.direction = r.pod<std::uint32_t>(); t.kept = r.pod<bool>();
+  }
   d.trims.resize(std::size_t(r.pod<std::uint64_t>()));
   for (Trim_point& t : d.trims) {
     t.p = r.pod<Sample>(); t.q = r.pod<Sample>(); t.x = r.pod<Point3>(); t.radius = r.pod<double>();

@@ -8,9 +8,12 @@
 // Every rank thus holds the same net and output as one process, point for point, and the
 // counters summed over the ranks are one process's.
 //
-// A failure or a cancellation on one rank travels with the next exchange, so that every
-// rank ends with it instead of waiting: the failing rank rethrows its own exception, the
-// others throw Rank_failed.
+// A failure or a cancellation on one rank during the decisions (deciding, committing, the
+// output, the progress callback) travels with the next exchange, so that every rank ends with
+// it instead of waiting: the failing rank rethrows its own exception, the others throw
+// Rank_failed (agree() does the same for any step). Every rank must be given the same input
+// and parameters; a fingerprint of the candidates is compared before the decisions
+// (check_same_work), so that different inputs fail on every rank instead of hanging.
 // Messages are plain bytes (Byte_writer, Byte_reader), in the layout of the machine: the
 // ranks must run the same build on the same architecture.
 
@@ -28,6 +31,7 @@
 #include <cstring>
 #include <exception>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -129,6 +133,64 @@ inline std::vector<int> wave_owners(const std::vector<std::size_t>& work, std::s
   return owner;
 }
 
+/// The message of an exception.
+inline std::string message_of(std::exception_ptr e)
+{
+  try {
+    std::rethrow_exception(e);
+  } catch (const std::exception& x) {
+    return x.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
+/// The head of every rank's message in a collective step: failed (with the message),
+/// cancelled, or fine.
+inline void write_status(Byte_writer& w, std::exception_ptr failure, bool cancelled)
+{
+  w.pod(std::uint8_t(failure ? 2 : cancelled ? 1 : 0));
+  if (failure) w.text(message_of(failure));
+}
+
+/// Reads every rank's status (readers in rank order) and throws, on every rank alike, if one
+/// failed or was cancelled: a failing rank its own exception (`failure`), the others
+/// Rank_failed with the first failing rank's message; else Operation_cancelled.
+inline void check_statuses(std::vector<Byte_reader>& readers, std::exception_ptr failure)
+{
+  std::optional<Rank_failed> first_failure;
+  bool any_cancelled = false;
+  for (int r = 0; r < int(readers.size()); ++r) {
+    const auto status = readers[std::size_t(r)].pod<std::uint8_t>();
+    if (status == 2 && !first_failure) first_failure.emplace(r, readers[std::size_t(r)].text());
+    any_cancelled = any_cancelled || status == 1;
+  }
+  if (failure) std::rethrow_exception(failure);
+  if (first_failure) throw *first_failure;
+  if (any_cancelled) throw Operation_cancelled();
+}
+
+/// Collective: does the step that gave `failure` (null: it succeeded) fail on any rank? If so,
+/// every rank throws (check_statuses).
+inline void agree(Communicator& comm, std::exception_ptr failure)
+{
+  Byte_writer w;
+  write_status(w, failure, false);
+  const std::vector<std::string> all = comm.all_gather(w.bytes());
+  std::vector<Byte_reader> readers(all.begin(), all.end());
+  check_statuses(readers, failure);
+}
+
+/// Collective: throws Invalid_input on every rank unless every rank passes the same
+/// `fingerprint` (of its input and parameters: the ranks would otherwise take different steps).
+inline void check_same_work(Communicator& comm, const std::string& fingerprint)
+{
+  for (const std::string& f : comm.all_gather(fingerprint))
+    if (f != fingerprint)
+      throw Invalid_input("the ranks were given different inputs or parameters: every rank must be given the same "
+                          "meshes, d and parameters");
+}
+
 /// One rank's share of the decisions, as gathered into Statistics::ranks.
 struct Rank_load
 {
@@ -143,7 +205,6 @@ class Wave_ranks
 {
 public:
   explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_so_far(std::size_t(comm.size()), 0) {}
-  Communicator& communicator() const { return m_comm; }
   const Rank_load& load() const { return m_load; }
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
 
@@ -161,62 +222,43 @@ public:
     return mine;
   }
 
-  /// Collective: sends the buffers of `mine` (indices from `first`), receives the others'
-  /// into `buffers`. Every rank then throws if a rank failed (`failure`) or was cancelled.
+  /// Collective: sends the buffers of `mine` (indices of the wave [first, last)), receives
+  /// the others' into `buffers` (index i in buffers[i - first]). Every rank then throws if a
+  /// rank failed (`failure`) or was cancelled: see agree().
   template <class Buffer>
-  void exchange(std::vector<Buffer>& buffers, std::size_t first, const std::vector<std::size_t>& mine,
+  void exchange(std::vector<Buffer>& buffers, std::size_t first, std::size_t last, const std::vector<std::size_t>& mine,
                 std::exception_ptr failure, bool cancelled)
   {
     const auto start = std::chrono::steady_clock::now();
     Byte_writer w;
-    w.pod(std::uint8_t(failure ? 2 : cancelled ? 1 : 0));
-    if (failure) w.text(message_of(failure));
-    else
+    write_status(w, failure, cancelled);
+    if (!failure && !cancelled)
       for (std::size_t i : mine) {
         w.pod(std::uint64_t(i));
         write_bytes(w, buffers[i - first]);
       }
     const std::vector<std::string> all = m_comm.all_gather(w.bytes());
     m_load.seconds_exchanging += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    bool any_cancelled = false;
-    for (int r = 0; r < int(all.size()); ++r) {
-      Byte_reader in(all[std::size_t(r)]);
-      const auto status = in.pod<std::uint8_t>();
-      if (status == 2) {
-        if (failure) std::rethrow_exception(failure);
-        throw Rank_failed(r, in.text());
-      }
-      any_cancelled = any_cancelled || status == 1;
-    }
-    if (failure) std::rethrow_exception(failure); // (not reached: this rank's status is 2)
-    if (any_cancelled) throw Operation_cancelled();
-    for (int r = 0; r < int(all.size()); ++r) {
+    std::vector<Byte_reader> readers(all.begin(), all.end());
+    check_statuses(readers, failure);
+    std::size_t received = mine.size();
+    for (int r = 0; r < int(readers.size()); ++r) {
       if (r == m_comm.rank()) continue;
-      Byte_reader in(all[std::size_t(r)]);
-      in.pod<std::uint8_t>();
+      Byte_reader& in = readers[std::size_t(r)];
       while (!in.done()) {
         const std::size_t i = std::size_t(in.pod<std::uint64_t>());
-        if (i < first || i - first >= buffers.size()) throw std::length_error("Wave_ranks: an index outside the wave");
+        if (i < first || i >= last) throw std::length_error("Wave_ranks: an index outside the wave");
         read_bytes(in, buffers[i - first]);
+        ++received;
       }
     }
+    if (received != last - first) throw std::length_error("Wave_ranks: a wave's decisions are missing");
   }
 
   /// Collective: every rank's `bytes`, in rank order.
   std::vector<std::string> gather(const std::string& bytes) { return m_comm.all_gather(bytes); }
 
 private:
-  static std::string message_of(std::exception_ptr e)
-  {
-    try {
-      std::rethrow_exception(e);
-    } catch (const std::exception& x) {
-      return x.what();
-    } catch (...) {
-      return "unknown error";
-    }
-  }
-
   Communicator& m_comm;
   std::vector<std::size_t> m_so_far; // every rank's work so far
   Rank_load m_load;

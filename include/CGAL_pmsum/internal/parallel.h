@@ -113,11 +113,11 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
   for (std::size_t w : work) total += w;
   std::vector<Buffer> buffers;
   std::vector<std::size_t> mine;
+  // With ranks, whatever fails (or cancels) on this rank travels with the next exchange.
+  std::exception_ptr failure;
   bool cancelled = false;
   for (std::size_t first = 0; first < work.size();) {
     const std::size_t last = wave_end(work, first, wave_work);
-    std::size_t wave = 0;
-    for (std::size_t i = first; i < last; ++i) wave += work[i];
     if (buffers.size() < last - first) buffers.resize(last - first);
     for (std::size_t k = 0; k < last - first; ++k) buffers[k].clear();
     if (ranks) mine = ranks->share(work, first, last);
@@ -125,27 +125,34 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
       mine.resize(last - first);
       std::iota(mine.begin(), mine.end(), first);
     }
-    std::exception_ptr failure;
     const auto start = std::chrono::steady_clock::now();
     try {
-      for_each_index(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
+      if (!failure && !cancelled)
+        for_each_index(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
     } catch (...) {
       if (!ranks) throw;
       failure = std::current_exception();
     }
     if (ranks) {
       ranks->add_deciding_seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      ranks->exchange(buffers, first, mine, failure, cancelled);
+      ranks->exchange(buffers, first, last, mine, failure, cancelled);
     }
-    for (std::size_t i = first; i < last; ++i) commit(i, buffers[i - first]);
-    done += wave;
+    try {
+      for (std::size_t i = first; i < last; ++i) {
+        commit(i, buffers[i - first]);
+        done += work[i];
+      }
+      if (progress && !progress(total == 0 ? 1. : double(done) / double(total))) {
+        if (!ranks) throw Operation_cancelled();
+        cancelled = true;
+      }
+    } catch (...) {
+      if (!ranks) throw;
+      failure = std::current_exception();
+    }
     first = last;
-    if (progress && !progress(total == 0 ? 1. : double(done) / double(total))) {
-      if (!ranks) throw Operation_cancelled();
-      cancelled = true;
-    }
   }
-  if (ranks) ranks->exchange(buffers, 0, {}, nullptr, cancelled);
+  if (ranks) ranks->exchange(buffers, 0, 0, {}, failure, cancelled);
 }
 
 } // namespace internal

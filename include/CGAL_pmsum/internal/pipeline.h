@@ -158,6 +158,7 @@ public:
     std::size_t total = 0;
     const std::vector<std::size_t> work = candidates_per_pair(pairs, sp, sq, total);
     stats.candidates = total;
+    if (m_o.communicator) check_same_work(*m_o.communicator, fingerprint(d, work));
     if (total > m_o.max_candidates) throw Too_many_candidates(total, m_o.max_candidates);
 
     // Stage 3a: the octree filter.
@@ -256,6 +257,22 @@ public:
   }
 
 private:
+  /// What the ranks must agree on before they share the decisions (distribution.h).
+  std::string fingerprint(double d, const std::vector<std::size_t>& work) const
+  {
+    Byte_writer w;
+    w.pod(d);
+    w.pod(m_o.max_candidates);
+    for (bool b : {m_o.use_normal_filter, m_o.use_cd_filter, m_o.use_octree_filter, m_o.use_covering_net,
+                   m_o.use_trim_points, m_o.search_islands, m_o.keep_vertex_sums, m_coarse_to_fine})
+      w.pod(std::uint8_t(b));
+    std::uint64_t h = 0xcbf29ce484222325ull; // FNV-1a of the work of every pair
+    for (std::size_t x : work) h = (h ^ std::uint64_t(x)) * 0x100000001b3ull;
+    w.pod(std::uint64_t(work.size()));
+    w.pod(h);
+    return w.bytes();
+  }
+
   const Mesh_data& m_p;
   const Mesh_data& m_q;
   Pipeline_options m_o;
