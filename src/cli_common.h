@@ -355,8 +355,10 @@ void with_threads(int threads, F&& f)
 inline auto sum_parameters(const Sum_input& in, CGAL::Pmsum::Statistics& stats,
                            const std::function<bool(double)>& callback)
 {
-  // Each output point is held in memory before the file is written.
-  const std::size_t limit = in.force ? std::size_t(-1) : memory_budget_bytes() / sizeof(Record);
+  // Each output point is held in memory before the file is written, by every rank of this
+  // machine under mpirun; the ranks agree on the smallest limit.
+  const std::size_t limit =
+    in.force ? std::size_t(-1) : smallest_over_ranks(memory_budget_bytes() / sizeof(Record) / ranks_on_this_machine());
   return CGAL::parameters::use_normal_filter(in.normal_filter)
     .use_cd_filter(in.cd_filter)
     .use_octree_filter(in.octree_filter)

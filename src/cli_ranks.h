@@ -5,7 +5,8 @@
 // same command: each reads the inputs and decides its share of the sum (named parameter
 // `communicator`); rank 0 alone writes the outputs, shows progress and prints errors. A
 // failure on one rank (an input it cannot read, an exception) ends every rank: the steps
-// that can fail on one rank alone run in agreed(). Otherwise (or started without mpirun)
+// that can fail on one rank alone run in agreed(), the library shares the failures of its
+// decisions, and any other error on one rank ends every rank (abort_all_ranks). Otherwise (or started without mpirun)
 // the tool is one process and nothing here does anything.
 
 #ifndef CGAL_PMSUM_CLI_RANKS_H
@@ -13,11 +14,15 @@
 
 #include <CGAL_pmsum/Communicator.h>
 #include <CGAL_pmsum/exceptions.h>
+#include <CGAL_pmsum/internal/distribution.h>
+
+#include "cli_errors.h"
 
 #ifdef CGAL_PMSUM_WITH_MPI
 #include <CGAL_pmsum/MPI_communicator.h>
 #endif
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -35,6 +40,12 @@ inline CGAL::Pmsum::Communicator*& world()
 {
   static CGAL::Pmsum::Communicator* c = nullptr;
   return c;
+}
+/// Set when agreed() throws: every rank knows of the failure.
+inline bool& failure_agreed()
+{
+  static bool agreed = false;
+  return agreed;
 }
 } // namespace ranks_internal
 
@@ -95,23 +106,69 @@ auto agreed(Step&& step) -> decltype(step())
   CGAL::Pmsum::Communicator* c = world_communicator();
   if (!c) return step();
   std::exception_ptr failure;
-  std::string message;
-  using Result = decltype(step());
-  std::optional<Result> result;
+  std::optional<decltype(step())> result;
   try {
     result.emplace(step());
-  } catch (const std::exception& e) {
-    failure = std::current_exception();
-    message = e.what();
   } catch (...) {
     failure = std::current_exception();
-    message = "unknown error";
   }
-  const std::vector<std::string> all = c->all_gather(failure ? "1" + message : "0");
-  if (failure) std::rethrow_exception(failure);
-  for (int r = 0; r < int(all.size()); ++r)
-    if (!all[std::size_t(r)].empty() && all[std::size_t(r)][0] == '1') throw CGAL::Pmsum::Rank_failed(r, all[std::size_t(r)].substr(1));
+  try {
+    CGAL::Pmsum::internal::agree(*c, failure);
+  } catch (...) {
+    ranks_internal::failure_agreed() = true;
+    throw;
+  }
   return std::move(*result);
+}
+
+/// Did every rank learn of the error being handled (an error of agreed(), or one that every
+/// rank meets alike: bad arguments or input, a refusal, a cancellation, another rank's
+/// failure)? If not, the other ranks may wait for this one: abort_all_ranks().
+inline bool every_rank_knows(std::exception_ptr e)
+{
+  if (!world_communicator() || ranks_internal::failure_agreed()) return true;
+  try {
+    std::rethrow_exception(e);
+  } catch (const CGAL::Pmsum::Rank_failed&) {
+  } catch (const CGAL::Pmsum::Invalid_input&) {
+  } catch (const CGAL::Pmsum::Too_large&) {
+  } catch (const CGAL::Pmsum::Operation_cancelled&) {
+  } catch (const CGAL::Pmsum::Mesh_reconstruction_failed&) {
+  } catch (const Usage_error&) {
+  } catch (const Refused&) {
+  } catch (...) {
+    return false;
+  }
+  return true;
+}
+
+/// Ends every rank at once with exit code `code` (MPI_Abort), or this process alone.
+[[noreturn]] inline void abort_all_ranks(int code)
+{
+#ifdef CGAL_PMSUM_WITH_MPI
+  if (world_communicator()) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+  std::exit(code);
+}
+
+/// The smallest of every rank's `v` (the ranks must agree on limits they compute alone).
+inline std::size_t smallest_over_ranks(std::size_t v)
+{
+  CGAL::Pmsum::Communicator* c = world_communicator();
+  if (!c) return v;
+  std::size_t m = v;
+  for (const std::string& s : c->all_gather(std::to_string(v))) m = (std::min)(m, std::size_t(std::stoull(s)));
+  return m;
+}
+
+/// The ranks that share this machine's memory (1 without MPI).
+inline std::size_t ranks_on_this_machine()
+{
+  if (!world_communicator()) return 1;
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE"); // Open MPI
+  if (!local) local = std::getenv("MPI_LOCALNRANKS");             // MPICH
+  const long n = local ? std::atol(local) : 0;
+  return n > 0 ? std::size_t(n) : std::size_t(world_communicator()->size());
 }
 
 } // namespace pmsum_cli

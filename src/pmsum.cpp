@@ -470,6 +470,15 @@ int main(int argc, char** argv)
   install_signal_cleanup();
   const Ranks_session ranks(argc, argv); // mpirun: every rank runs the command (cli_ranks.h)
   std::ostream& err = error_stream();    // rank 0 alone prints errors
+  // An error that this rank alone met ends every rank: the others may be waiting for it.
+  auto failed = [&](int code, const std::string& line) {
+    if (every_rank_knows(std::current_exception())) {
+      err << line << "\n";
+      return code;
+    }
+    std::cerr << line << " (rank " << process_rank() << ")\n";
+    abort_all_ranks(code);
+  };
   try {
     if (argc < 2) { err << usage_text; return 2; }
     const std::string command = argv[1];
@@ -507,13 +516,10 @@ int main(int argc, char** argv)
     err << "pmsum: error: " << e.what() << "\n";
     return 1;
   } catch (const Error& e) {
-    err << "pmsum: error: " << e.what() << "\n";
-    return 1;
+    return failed(1, std::string("pmsum: error: ") + e.what());
   } catch (const std::bad_alloc&) {
-    err << "pmsum: error: out of memory\n";
-    return 1;
+    return failed(1, "pmsum: error: out of memory");
   } catch (const std::exception& e) {
-    err << "pmsum: error: " << e.what() << "\n";
-    return 1;
+    return failed(1, std::string("pmsum: error: ") + e.what());
   }
 }

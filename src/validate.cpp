@@ -78,9 +78,18 @@ int command_validate(int argc, char** argv)
   const std::vector<Record> records = compute_sum(in, stats);
   const double ours_seconds = seconds_since(t_ours);
   if (args.has("--points")) write_points(files["--points"], oriented_points(records));
-  // mpirun: the other ranks have shared the sum; the checks are rank 0's (with --mesh, the
-  // mesh's sum is shared too, so they go on).
-  if (!is_main_rank() && !args.flag("--mesh")) return 0;
+  // mpirun: the other ranks share the sums (and the mesh's, in the same order as rank 0);
+  // the exact sum, the checks and the outputs are rank 0's.
+  if (!is_main_rank()) {
+    if (args.flag("--mesh")) {
+      CGAL::Pmsum::Mesh_statistics ms;
+      try {
+        compute_mesh(in, ms);
+      } catch (const CGAL::Pmsum::Mesh_reconstruction_failed&) { // rank 0 reports it
+      }
+    }
+    return 0;
+  }
 
   // The exact boundary.
   std::unique_ptr<CGAL::Pmsum::Nef_minkowski_sum_reference> ref;

@@ -2,16 +2,7 @@
 # Tests of the pmsum command-line tool: good runs, and bad input that must give a one-line
 # error, a non-zero exit code and no output file.
 #   cli_test.sh PMSUM_BINARY DATA_DIR
-set -u
-pmsum=$1
-data=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-ko() { failed=$((failed + 1)); echo "FAILED: $*"; }
+. "$(dirname "$0")/script_common.sh"
 
 # expect_fail CODE PATTERN -- ARGS... : exit code CODE, stderr matches PATTERN, no $work/out.*
 expect_fail() {
@@ -359,5 +350,4 @@ p.send_signal(signal.SIGINT)
 print(p.wait())' "$pmsum" sum "$data/knot1.off" "$data/elephant.off" -d 0.005 --relative -o "$work/out.ply" --quiet)
 if [ "$got" = 130 ] && ! ls "$work"/out.* "$work"/.pmsum-* > /dev/null 2>&1; then ok; else ko "SIGINT: exit $got or files left"; ls -a "$work"; fi
 
-echo "cli: $passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary cli

@@ -3,15 +3,7 @@
 # the same output files byte for byte and the same JSON counts; a bad input ends every rank
 # with one error line and no output file.
 #   mpi_test.sh PMSUM_BINARY DATA_DIR
-set -u
-pmsum=$1
-data=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-ko() { failed=$((failed + 1)); echo "FAILED: $*"; }
+. "$(dirname "$0")/script_common.sh"
 
 # Two ranks on any machine (--oversubscribe), also as root (as CI runs); a hung rank is a failure.
 launcher=(mpirun --oversubscribe -np 2)
@@ -61,6 +53,13 @@ same_run "l-shape + cube, XYZ" xyz sum "$work/l-shape.off" "$work/cube.off" -d 0
 same_run "narrow tunnel (trim points), PLY" ply sum "$work/tunnel.off" "$work/tunnel-cube.off" -d 0.03 --relative
 same_run "offset of the octahedron" ply offset "$data/octahedron.off" -r 0.1 -d 0.05 --relative
 
+# Coarse to fine (--levels): every level's file too (the decisions reused travel with the ranks).
+levels=(sum "$work/l-shape.off" "$work/cube.off" -d 0.02 --relative --levels 0.05 --quiet)
+"$pmsum" "${levels[@]}" -o "$work/lv1.ply" && two "${levels[@]}" -o "$work/lv2.ply" > "$work/out" 2>&1
+if [ $? != 0 ]; then ko "levels: a run failed"; cat "$work/out"
+elif ! cmp -s "$work/lv1.level0.ply" "$work/lv2.level0.ply" || ! cmp -s "$work/lv1.ply" "$work/lv2.ply"; then ko "levels: a level differs"
+else ok; fi
+
 # Bad input: every rank ends, with one error line (rank 0's), exit code 1, no output file.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/broken.off"
 rm -f "$work"/bad.*
@@ -76,5 +75,4 @@ else ok; fi
 two pd "$data/octahedron.off" "$data/tetrahedron.off" -d 0.1 --at 0 0 0 > "$work/stdout" 2> "$work/stderr"
 if [ $? = 0 ] || [ "$(grep -o 'pmsum: under mpirun' "$work/stderr" | wc -l)" != 1 ]; then ko "pd under mpirun is not refused with one line"; cat "$work/stderr"; else ok; fi
 
-echo "mpi_test: $passed passed, $failed failed"
-[ "$failed" = 0 ]
+summary mpi_test
