@@ -69,12 +69,6 @@ struct Pipeline_options
   Communicator* communicator = nullptr; // the ranks that share the decisions (distribution.h)
 };
 
-/// Stages 1 to 5 (see the file comment) on two prepared meshes, for one covering distance or
-/// for several, coarse to fine: what does not depend on d (the normal filter, the CD
-/// filter's trees, the octree's interior certificate) is computed once, and each level
-/// samples with resolutions that are multiples of the coarser level's, so that every
-/// coarser candidate is a candidate again and its decision (boundary point with its
-/// direction, or inner) is reused instead of tested.
 /// Collective: the totals of every rank's decisions (`mine`: this rank's), and each rank's
 /// load into stats.ranks.
 inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& mine, Statistics& stats)
@@ -103,6 +97,12 @@ inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& 
 /// hooks at d = 1% 2% of the tests, against 20% with 1/200), large enough for the threads.
 inline std::size_t wave_work(std::size_t total) { return (std::max<std::size_t>)(1, total / 2000); }
 
+/// Stages 1 to 5 (see the file comment) on two prepared meshes, for one covering distance or
+/// for several, coarse to fine: what does not depend on d (the normal filter, the CD
+/// filter's trees, the octree's interior certificate) is computed once, and each level
+/// samples with resolutions that are multiples of the coarser level's, so that every
+/// coarser candidate is a candidate again and its decision (boundary point with its
+/// direction, or inner) is reused instead of tested.
 template <class ConcurrencyTag>
 class Pipeline
 {
