@@ -175,6 +175,12 @@ struct Cd_statistics
   std::size_t queries = 0;            // is_free calls
   std::size_t triangle_pairs = 0;     // exact triangle-triangle tests
   std::size_t containment_tests = 0;  // ray-parity point-in-solid tests
+  void add(const Cd_statistics& o)
+  {
+    queries += o.queries;
+    triangle_pairs += o.triangle_pairs;
+    containment_tests += o.containment_tests;
+  }
 };
 
 /// What the collision tests share and never modify: the two meshes in their frames, with

@@ -114,12 +114,6 @@ struct Decision_totals
 {
   Decision_counters counters;
   Cd_statistics filter;
-  void add(const Cd_statistics& s)
-  {
-    filter.queries += s.queries;
-    filter.triangle_pairs += s.triangle_pairs;
-    filter.containment_tests += s.containment_tests;
-  }
 };
 
 /// What the decisions of one level read. Everything but `filter` is shared and read-only
@@ -149,44 +143,25 @@ struct Pair_decision
   void clear() { tentative.clear(); trims.clear(); tested.clear(); }
 };
 
-/// A pair's decisions as bytes, for the other ranks (distribution.h).
-inline void write_bytes(Byte_writer& w, const Pair_decision& d)
+/// A pair's decisions to bytes (Io = Byte_writer, Decision = const Pair_decision) or back
+/// (Byte_reader, Pair_decision), for the other ranks (distribution.h): one list of fields.
+template <class Io, class Decision>
+void transfer(Io& io, Decision& d)
 {
-  w.pod(std::uint64_t(d.tentative.size()));
-  for (const Tentative& t : d.tentative) { w.pod(t.p); w.pod(t.q); w.pod(t.x); w.pod(t.direction); w.pod(t.kept); }
-  w.pod(std::uint64_t(d.trims.size()));
-  for (const Trim_point& t : d.trims) {
-    w.pod(t.p); w.pod(t.q); w.pod(t.x); w.pod(t.radius); w.pod(t.direction);
-    w.pod(t.trim.p); w.pod(t.trim.q); w.rational(t.trim.lambda);
-    w.pod(t.trim.p2); w.pod(t.trim.q2); w.rational(t.trim.mu);
-    w.pod(t.trim.origin_p); w.pod(t.trim.origin_q);
+  io.size_of(d.tentative);
+  for (auto& t : d.tentative) { io.io(t.p); io.io(t.q); io.io(t.x); io.io(t.direction); io.io(t.kept); }
+  io.size_of(d.trims);
+  for (auto& t : d.trims) {
+    io.io(t.p); io.io(t.q); io.io(t.x); io.io(t.radius); io.io(t.direction);
+    io.io(t.trim.p); io.io(t.trim.q); io.io(t.trim.lambda);
+    io.io(t.trim.p2); io.io(t.trim.q2); io.io(t.trim.mu);
+    io.io(t.trim.origin_p); io.io(t.trim.origin_q);
   }
-  w.pod(std::uint64_t(d.tested.size()));
-  for (const auto& [key, decision] : d.tested) { w.pod(key); w.pod(decision); }
+  io.size_of(d.tested);
+  for (auto& [key, decision] : d.tested) { io.io(key); io.io(decision); }
 }
-
-/// Reads what write_bytes() wrote.
-inline void read_bytes(Byte_reader& r, Pair_decision& d)
-{
-  d.tentative.resize(std::size_t(r.pod<std::uint64_t>()));
-  for (Tentative& t : d.tentative) {
-    t.p = r.pod<Sample>(); t.q = r.pod<Sample>(); t.x = r.pod<Point3>();
-    t.direction = r.pod<std::uint32_t>(); t.kept = r.pod<bool>();
-  }
-  d.trims.resize(std::size_t(r.pod<std::uint64_t>()));
-  for (Trim_point& t : d.trims) {
-    t.p = r.pod<Sample>(); t.q = r.pod<Sample>(); t.x = r.pod<Point3>(); t.radius = r.pod<double>();
-    t.direction = r.pod<std::uint32_t>();
-    t.trim.p = r.pod<Sample>(); t.trim.q = r.pod<Sample>(); t.trim.lambda = r.rational();
-    t.trim.p2 = r.pod<Sample>(); t.trim.q2 = r.pod<Sample>(); t.trim.mu = r.rational();
-    t.trim.origin_p = r.pod<Feature>(); t.trim.origin_q = r.pod<Feature>();
-  }
-  d.tested.resize(std::size_t(r.pod<std::uint64_t>()));
-  for (auto& [key, decision] : d.tested) {
-    key = r.pod<Decision_cache::Key>();
-    decision = r.pod<std::uint32_t>();
-  }
-}
+inline void write_bytes(Byte_writer& w, const Pair_decision& d) { transfer(w, d); }
+inline void read_bytes(Byte_reader& r, Pair_decision& d) { transfer(r, d); }
 
 /// The CD test of candidate (p, q) of pair fp: its direction, or `inner`.
 inline std::uint32_t cd_decision(Cd_filter& filter, const Candidate_pairs& pairs, const Feature_pair& fp,

@@ -63,6 +63,12 @@ public:
     os << q;
     text(os.str());
   }
+  /// transfer() (decision.h) writes with these, and reads with Byte_reader's.
+  template <class T>
+  void io(const T& v) { pod(v); }
+  void io(const CGAL::Exact_rational& q) { rational(q); }
+  template <class Vector>
+  void size_of(const Vector& v) { pod(std::uint64_t(v.size())); }
   std::string& bytes() { return m_bytes; }
 
 private:
@@ -97,6 +103,11 @@ public:
     is >> q;
     return q;
   }
+  template <class T>
+  void io(T& v) { v = pod<T>(); }
+  void io(CGAL::Exact_rational& q) { q = rational(); }
+  template <class Vector>
+  void size_of(Vector& v) { v.resize(std::size_t(pod<std::uint64_t>())); }
   bool done() const { return m_at == m_bytes.size(); }
 
 private:

@@ -85,7 +85,7 @@ inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& 
     const auto filter = r.pod<Cd_statistics>();
     const auto load = r.pod<Rank_load>();
     all.counters.add(counters);
-    all.add(filter);
+    all.filter.add(filter);
     stats.ranks.push_back({load.feature_pairs, load.candidates, filter.queries - counters.trim_queries,
                            load.seconds_deciding, load.seconds_exchanging});
   }
@@ -238,10 +238,10 @@ public:
       m_o.callback, ranks ? &*ranks : nullptr);
     Decision_totals decided;
     counters.for_each([&](const Decision_counters& c) { decided.counters.add(c); });
-    if (filters) filters->for_each([&](const Cd_filter& f) { decided.add(f.statistics()); });
+    if (filters) filters->for_each([&](const Cd_filter& f) { decided.filter.add(f.statistics()); });
     if (ranks) decided = add_over_ranks(*ranks, decided, stats);
     decided.counters.add(commit_counters);
-    if (commit_filter) decided.add(commit_filter->statistics());
+    if (commit_filter) decided.filter.add(commit_filter->statistics());
     stats.candidates_reused = decided.counters.reused;
     stats.candidates_certified = decided.counters.certified;
     stats.candidates_covered = decided.counters.covered;
