@@ -3,9 +3,9 @@
 //
 // The partitioner of `mpirun -np K pmsum sum` alone, simulated for many K (benchmark/mpi/run_mpi.py):
 //   mpi_balance P Q d_relative [scale_q] K1 K2 ...
-// For each K, the engine's own waves (internal::wave_end, internal::wave_work) are shared
-// among K ranks by internal::wave_owners, with each pair's candidates as its work, as the
-// engine does. Prints one JSON line per K:
+// For each K, the engine's own waves (internal::wave_end, internal::wave_work) of pieces of
+// feature pairs (internal::make_pieces) are shared among K ranks by internal::wave_owners,
+// with each piece's candidates as its work, as the engine does. Prints one JSON line per K:
 //   largest_share   the largest rank's share of the whole work (the memory and the total work)
 //   critical_share  the sum over the waves of the wave's largest rank load, over the whole
 //                   work: the ranks wait for each other after every wave, so the time is at
@@ -60,8 +60,9 @@ int main(int argc, char** argv)
   const in::Mesh_data mq = in::make_mesh_data(Q, get(CGAL::vertex_point, Q), false, false, "Q", dq);
   const in::Candidate_pairs pairs = in::candidate_feature_pairs(mp, mq, true, true);
   const in::Mesh_sampling sp(mp, d / 2, "P"), sq(mq, d / 2, "Q");
-  std::size_t total = 0;
-  const std::vector<std::size_t> work = in::candidates_per_pair(pairs, sp, sq, total);
+  const std::size_t total = in::number_of_candidates(pairs, sp, sq);
+  std::vector<std::size_t> work; // of each piece, as the engine cuts the pairs
+  const std::vector<in::Pair_piece> pieces = in::make_pieces(pairs, sp, sq, in::piece_work(total), in::piece_rows, work);
   std::size_t waves = 0;
   for (std::size_t first = 0; first < work.size(); first = in::wave_end(work, first, in::wave_work(total))) ++waves;
 
@@ -79,6 +80,7 @@ int main(int argc, char** argv)
     }
     const double largest = double(*std::max_element(so_far.begin(), so_far.end()));
     std::cout << "{\"k\": " << k << ", \"d\": " << d << ", \"feature_pairs\": " << pairs.pairs.size()
+              << ", \"pieces\": " << pieces.size()
               << ", \"candidates\": " << total << ", \"waves\": " << waves
               << ", \"largest_share\": " << largest / double(total) << ", \"critical_share\": " << critical / double(total)
               << "}" << std::endl;

@@ -17,10 +17,10 @@ namespace Pmsum {
 /// One rank's share of the decisions of a run with a communicator (Statistics::ranks).
 struct Rank_statistics
 {
-  std::size_t feature_pairs = 0;   ///< feature pairs this rank decided
+  std::size_t pieces = 0;          ///< pieces of feature pairs this rank decided (the unit of work)
   std::size_t candidates = 0;      ///< their candidates (the work estimate that shares them out)
   std::size_t cd_queries = 0;      ///< collision tests of candidates made by this rank
-  double seconds_deciding = 0;     ///< seconds spent deciding its pairs
+  double seconds_deciding = 0;     ///< seconds spent deciding its pieces
   double seconds_exchanging = 0;   ///< seconds spent exchanging decisions (waiting for the others included)
 };
 

@@ -10,12 +10,13 @@
 // The output is the greedy net of the boundary candidates in canonical order (candidates.h):
 // a candidate is output iff it is a boundary point and no earlier output point covers it.
 //
-// That order is sequential, the tests are not: a wave of feature pairs is decided in
-// parallel against the net as it stood before the wave (decide_pair), each pair also
-// skipping what its own tentative points cover; the wave is then committed in canonical
-// order on one thread (commit), which drops what an earlier commit now covers and tests the
-// rare candidate whose covering tentative point was dropped. The result is the sequential
-// greedy net, for any number of threads.
+// That order is sequential, the tests are not: a wave of pieces of feature pairs (a pair, or
+// a run of rows of its lattice: candidates.h) is decided in parallel against the net as it
+// stood before the wave (decide_piece), each piece also skipping what its own tentative
+// points cover; the wave is then committed in canonical order on one thread (commit_piece),
+// which drops what an earlier commit now covers and tests the rare candidate whose covering
+// tentative point was dropped. The result is the sequential greedy net, for any number of
+// threads.
 
 #ifndef CGAL_PMSUM_INTERNAL_DECISION_H
 #define CGAL_PMSUM_INTERNAL_DECISION_H
@@ -178,14 +179,16 @@ inline std::uint32_t cd_decision(Cd_filter& filter, const Candidate_pairs& pairs
 inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
                         std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters);
 
-/// Thread phase: decides the candidates of pair i (see the file comment) into `out`.
-inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* filter, Pair_candidates& candidates,
-                        Pair_decision& out, Decision_counters& counters)
+/// Thread phase: decides the candidates of a piece of a pair (see the file comment) into
+/// `out`, then searches the trim points of the piece's cells.
+inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_filter* filter,
+                         Pair_candidates& candidates, Pair_decision& out, Decision_counters& counters)
 {
+  const std::size_t i = piece.pair;
   const Feature_pair& fp = c.pairs->pairs[i];
-  if (filter) filter->forget_last_crossing(); // the pair's counts: the same on any thread or rank
+  if (filter) filter->forget_last_crossing(); // the piece's counts: the same on any thread or rank
   const bool positions = c.octree || c.net;
-  candidates.load(*c.sp, *c.sq, fp, positions);
+  candidates.load(*c.sp, *c.sq, fp, Pair_rows(*c.sp, *c.sq, fp), piece.rows, positions);
   // Which samples the coarser level had (only their pairs can be in the cache).
   std::vector<std::uint8_t> old_p(candidates.size_p(), 0), old_q(candidates.size_q(), 0);
   if (c.coarser_p && c.cache && !c.cache->empty()) {
@@ -197,7 +200,7 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
   std::optional<Facet_lattice> lattice;
   std::vector<Corner_info> corners;
   if (filter && c.use_cd_filter && c.trim_points && fp.number_of_directions > 0) {
-    lattice.emplace(*c.sp, *c.sq, fp);
+    lattice.emplace(*c.sp, *c.sq, fp, piece.rows);
     if (lattice->empty()) lattice.reset();
     else corners.assign(lattice->size(), Corner_info{});
   }
@@ -243,16 +246,16 @@ inline void decide_pair(const Decision_context& c, std::size_t i, Cd_filter* fil
   if (lattice) trim_search(c, fp, *lattice, corners, *filter, out, counters);
 }
 
-/// The trim points of pair fp's facet (trim_points.h). Lattice points that are not this
-/// pair's candidates (on the facet's edges) are covered if the net covers them, else tested
-/// with the pair's directions.
+/// The trim points of a piece of pair fp's facet (trim_points.h). Lattice points that are not
+/// the piece's candidates (on the facet's edges, or the next piece's) are covered if the net
+/// covers them, else tested with the pair's directions.
 inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
                         std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters)
 {
   const Mesh_data &P = c.sp->mesh(), &Q = c.sq->mesh();
   auto corner = [&](std::uint32_t k) -> const Corner_info& {
     Corner_info& info = corners[k];
-    if (lattice.is_candidate(k) || info.status != Corner::unknown) return info;
+    if (lattice.is_own_candidate(k) || info.status != Corner::unknown) return info;
     const Point3 x = lattice.position(k, P, Q);
     if (c.net && c.net->covers(x)) { info.status = Corner::covered; return info; }
     if (c.octree && (info.leaf = c.octree->certified_leaf(x))) { info.status = Corner::inside; return info; }
@@ -281,12 +284,12 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
   counters.trim_queries += filter.statistics().queries - queries_before;
 }
 
-/// Commit phase, on one thread, pairs in canonical order: the sequential greedy choice over
-/// the tentative points of pair i. Calls emit(tentative with its direction) for each output
-/// point and inserts it in `net`; `filter` tests what decide_pair left untested. With
-/// `cache` (coarse to fine), every decision of the pair is added to it.
+/// Commit phase, on one thread, pieces in canonical order: the sequential greedy choice over
+/// the tentative points of a piece of pair i. Calls emit(tentative with its direction) for
+/// each output point and inserts it in `net`; `filter` tests what decide_piece left
+/// untested. With `cache` (coarse to fine), every decision of the piece is added to it.
 template <class Emit>
-void commit_pair(const Decision_context& c, std::size_t i, Pair_decision& decided, Covering_net* net,
+void commit_piece(const Decision_context& c, std::size_t i, Pair_decision& decided, Covering_net* net,
                  Cd_filter* filter, Decision_counters& counters, Decision_cache* cache, const Emit& emit)
 {
   const Feature_pair& fp = c.pairs->pairs[i];

@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 3 across processes (named parameter `communicator`). The decisions run in waves of
-// feature pairs (parallel.h), and the waves do not depend on the number of processes: each
-// rank decides its share of a wave's pairs (largest first, to the least loaded rank), the
-// ranks exchange their decisions, and every rank commits the whole wave in canonical order.
+// pieces of feature pairs (parallel.h, candidates.h), and the waves do not depend on the
+// number of processes: each rank decides its share of a wave's pieces (largest first, to the
+// least loaded rank), the ranks exchange their decisions, and every rank commits the whole
+// wave in canonical order.
 // Every rank thus holds the same net and output as one process, point for point, and the
 // counters summed over the ranks are one process's.
 //
@@ -121,16 +122,25 @@ private:
   std::size_t m_at = 0;
 };
 
-/// The rank of each index of [first, last): largest work first (ties: lower index), each to
-/// the rank least loaded in this wave, ties to the rank with the least work so far (`so_far`,
-/// updated), then the lower rank. The ranks wait for each other after every wave, so the
-/// wave's largest load is what counts; the totals are balanced too. The same on every rank.
+/// The rank of each index of [first, last): largest work first (ties in a fixed scrambled
+/// order: the costly pieces among equal ones, e.g. those of a pair whose trim search is
+/// long, are often the first, and would all go to the lower ranks), each to the rank least
+/// loaded in this wave, ties to the rank with the least work so far (`so_far`, updated), then
+/// the lower rank. The ranks wait for each other after every wave, so the wave's largest
+/// load is what counts; the totals are balanced too. The same on every rank.
 inline std::vector<int> wave_owners(const std::vector<std::size_t>& work, std::size_t first, std::size_t last,
                                     std::vector<std::size_t>& so_far)
 {
+  auto scrambled = [](std::uint64_t x) { // splitmix64's finaliser
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+  };
   std::vector<std::size_t> order(last - first);
   std::iota(order.begin(), order.end(), first);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return work[a] > work[b]; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return work[a] != work[b] ? work[a] > work[b] : scrambled(a) < scrambled(b);
+  });
   std::vector<std::size_t> load(so_far.size(), 0);
   std::vector<int> owner(last - first, 0);
   for (std::size_t i : order) {
@@ -205,7 +215,7 @@ inline void check_same_work(Communicator& comm, const std::string& fingerprint)
 /// One rank's share of the decisions, as gathered into Statistics::ranks.
 struct Rank_load
 {
-  std::size_t feature_pairs = 0, candidates = 0;
+  std::size_t pieces = 0, candidates = 0;
   double seconds_deciding = 0, seconds_exchanging = 0;
 };
 
@@ -227,7 +237,7 @@ public:
     for (std::size_t i = first; i < last; ++i)
       if (owner[i - first] == m_comm.rank()) {
         mine.push_back(i);
-        ++m_load.feature_pairs;
+        ++m_load.pieces;
         m_load.candidates += work[i];
       }
     return mine;

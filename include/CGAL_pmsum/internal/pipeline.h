@@ -4,10 +4,11 @@
 // The pipeline after the input stage, on two prepared meshes; this file only wires the stages:
 //   1. sampling.h       sampling resolutions of P and Q (d/2-coverings)
 //   2. normal_filter.h  the feature pairs whose sums can be on the boundary (once for all levels);
-//      candidates.h     their sample sums, the candidates, in canonical order
+//      candidates.h     their sample sums, the candidates, in canonical order, and the pairs
+//                       cut into pieces (runs of rows of their lattices), the unit of work
 //   3. octree_filter.h  octree cells of the candidates certified inside the sum
 //      decision.h       each candidate: reused, certified inner, covered by the net, or CD-tested
-//                       (cd_filter.h), in waves of feature pairs (parallel.h); then the pair's
+//                       (cd_filter.h), in waves of pieces of pairs (parallel.h); then the piece's
 //                       trim points: trim_points.h (which lattice segments), segment_search.h
 //                       (their free parts, exactly)
 //      distribution.h   with a communicator: each rank decides its share of each wave
@@ -86,16 +87,27 @@ inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& 
     const auto load = r.pod<Rank_load>();
     all.counters.add(counters);
     all.filter.add(filter);
-    stats.ranks.push_back({load.feature_pairs, load.candidates, filter.queries - counters.trim_queries,
+    stats.ranks.push_back({load.pieces, load.candidates, filter.queries - counters.trim_queries,
                            load.seconds_deciding, load.seconds_exchanging});
   }
   return all;
 }
 
-/// The work of a wave of decisions, for `total` candidates: about 1/2000 of them, small
-/// enough that few candidates are tested in vain (covered by an earlier pair of their wave:
-/// hooks at d = 1% 2% of the tests, against 20% with 1/200), large enough for the threads.
-inline std::size_t wave_work(std::size_t total) { return (std::max<std::size_t>)(1, total / 2000); }
+/// The work of a wave of decisions, for `total` candidates: about 1/500 of them, small
+/// enough that few candidates are tested in vain (covered by an earlier piece of their wave:
+/// hooks at d = 2%, 9,042 CD queries against 8,585 with 1/2000), large enough that a few
+/// costly pieces (long trim searches) do not leave the threads and ranks waiting (knot1 +
+/// tetrahedron/32 at d = 0.3%, 2 threads: 1.8 times faster than 1, against 1.5 with 1/2000).
+inline std::size_t wave_work(std::size_t total) { return (std::max<std::size_t>)(1, total / 500); }
+
+/// The work of a piece of a pair (candidates.h, make_pieces), for `total` candidates: a
+/// fraction of a wave's, so that a wave holds several pieces to share among the threads and
+/// the ranks, even where single pairs are larger than a wave.
+inline std::size_t piece_work(std::size_t total) { return (std::max<std::size_t>)(1, wave_work(total) / 4); }
+
+/// The fewest cell rows in a piece: a piece tests the corners of its last lattice row again
+/// (the next piece's candidates) when its trim search needs them.
+constexpr std::int32_t piece_rows = 2;
 
 /// Stages 1 to 5 (see the file comment) on two prepared meshes, for one covering distance or
 /// for several, coarse to fine: what does not depend on d (the normal filter, the CD
@@ -154,10 +166,11 @@ public:
     stats.feature_pairs = pairs.pairs.size();
     stats.seconds_normal_filter = first_level ? m_seconds_normal_filter : 0;
 
-    // Stage 2: the candidates, counted.
-    std::size_t total = 0;
-    const std::vector<std::size_t> work = candidates_per_pair(pairs, sp, sq, total);
+    // Stage 2: the candidates, counted, and the pairs cut into pieces.
+    const std::size_t total = number_of_candidates(pairs, sp, sq);
     stats.candidates = total;
+    std::vector<std::size_t> work;
+    const std::vector<Pair_piece> pieces = make_pieces(pairs, sp, sq, piece_work(total), piece_rows, work);
     if (m_o.communicator) check_same_work(*m_o.communicator, fingerprint(d, work));
     if (total > m_o.max_candidates) throw Too_many_candidates(total, m_o.max_candidates);
 
@@ -176,7 +189,7 @@ public:
     }
     stats.seconds_octree_filter = seconds_since(start);
 
-    // Stages 3 to 5: decisions in waves of feature pairs (parallel), committed in canonical
+    // Stages 3 to 5: decisions in waves of pieces of pairs (parallel), committed in canonical
     // order to the net and the output on this thread, so that the output is the same for any
     // number of threads, and kernel constructions (Epeck's lazy numbers are not thread-safe)
     // and the callback stay on the calling thread.
@@ -228,11 +241,12 @@ public:
     if (m_o.communicator) ranks.emplace(*m_o.communicator);
     run_in_waves<Pair_decision>(
       work, wave_work(total), parallel,
-      [&](std::size_t i, Pair_decision& decided) {
-        decide_pair(context, i, filters ? &filters->local() : nullptr, candidates.local(), decided, counters.local());
+      [&](std::size_t k, Pair_decision& decided) {
+        decide_piece(context, pieces[k], filters ? &filters->local() : nullptr, candidates.local(), decided,
+                     counters.local());
       },
-      [&](std::size_t i, Pair_decision& decided) {
-        commit_pair(context, i, decided, net ? &*net : nullptr, commit_filter ? &*commit_filter : nullptr,
+      [&](std::size_t k, Pair_decision& decided) {
+        commit_piece(context, pieces[k].pair, decided, net ? &*net : nullptr, commit_filter ? &*commit_filter : nullptr,
                     commit_counters, m_coarse_to_fine ? &m_cache : nullptr, output_point);
       },
       m_o.callback, ranks ? &*ranks : nullptr);
@@ -266,7 +280,7 @@ private:
     for (bool b : {m_o.use_normal_filter, m_o.use_cd_filter, m_o.use_octree_filter, m_o.use_covering_net,
                    m_o.use_trim_points, m_o.search_islands, m_o.keep_vertex_sums, m_coarse_to_fine})
       w.pod(std::uint8_t(b));
-    std::uint64_t h = 0xcbf29ce484222325ull; // FNV-1a of the work of every pair
+    std::uint64_t h = 0xcbf29ce484222325ull; // FNV-1a of the work of every piece
     for (std::size_t x : work) h = (h ^ std::uint64_t(x)) * 0x100000001b3ull;
     w.pod(std::uint64_t(work.size()));
     w.pod(h);

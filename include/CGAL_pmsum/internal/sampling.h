@@ -142,12 +142,19 @@ public:
         out.push_back({f, {e.v[0], e.v[1], e.v[1]}, {den - k, k, 0}, den});
       });
     } else {
-      const std::int32_t n = m_triangle_n[f.index];
-      const auto& t = m_mesh->triangles[f.index];
-      for (std::int32_t i = 1; i < n; ++i)
-        for (std::int32_t j = 1; i + j < n; ++j)
-          out.push_back({f, t, {i, j, n - i - j}, n});
+      triangle_samples(f.index, 0, m_triangle_n[f.index], out);
     }
+  }
+
+  /// Appends the samples interior to triangle t whose first weight i lies in [first, last)
+  /// (the rows of its lattice, trim_points.h), in the order of samples().
+  void triangle_samples(Index t, std::int32_t first, std::int32_t last, std::vector<Sample>& out) const
+  {
+    const std::int32_t n = m_triangle_n[t];
+    const auto& tri = m_mesh->triangles[t];
+    for (std::int32_t i = (std::max)(first, 1); i < (std::min)(last, n); ++i)
+      for (std::int32_t j = 1; i + j < n; ++j)
+        out.push_back({Feature{2, t}, tri, {i, j, n - i - j}, n});
   }
 
   /// Number of samples whose origin is `f`.

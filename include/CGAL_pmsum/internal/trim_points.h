@@ -110,11 +110,14 @@ struct Trim_point
   std::uint32_t direction; // index in Candidate_pairs::directions
 };
 
-/// The closed lattice of the convolution facet of a 2-dimensional feature pair.
+/// The closed lattice of the convolution facet of a 2-dimensional feature pair, or the part
+/// of it that a piece of the pair searches (cell rows r of its Pair_rows, candidates.h): the
+/// cells of those rows and their corners, lattice rows r.first to r.last.
 class Facet_lattice
 {
 public:
-  Facet_lattice(const Mesh_sampling& sp, const Mesh_sampling& sq, const Feature_pair& fp) : m_fp(fp)
+  Facet_lattice(const Mesh_sampling& sp, const Mesh_sampling& sq, const Feature_pair& fp, Row_range rows)
+    : m_fp(fp), m_rows(rows)
   {
     const int dp = fp.p.dimension, dq = fp.q.dimension;
     if (dp + dq != 2) return;
@@ -128,19 +131,13 @@ public:
   std::size_t size() const { return m_p.size(); }
   const Sample& p(std::size_t i) const { return m_p[i]; }
   const Sample& q(std::size_t i) const { return m_q[i]; }
-  /// Is lattice point i one of the pair's own candidates (interior to both features), not a
-  /// point of the facet's border?
-  bool is_candidate(std::size_t i) const { return interior(m_fp.p, m_p[i]) && interior(m_fp.q, m_q[i]); }
+  /// Is lattice point i one of the piece's own candidates (interior to both features, not a
+  /// point of the facet's border, and not in the last row, which the next piece decides)?
+  bool is_own_candidate(std::size_t i) const
+  { return i < m_last_row_start && interior(m_fp.p, m_p[i]) && interior(m_fp.q, m_q[i]); }
   const std::vector<std::array<std::uint32_t, 3>>& cells() const { return m_cells; }
-  /// The lattice points at the facet's corners (its convex hull).
-  std::vector<std::uint32_t> corners() const
-  {
-    if (m_fp.p.dimension == 1) {
-      const auto np = std::uint32_t(m_params_p.size()), nq = std::uint32_t(m_params_q.size());
-      return {0, nq - 1, (np - 1) * nq, np * nq - 1};
-    }
-    return {std::uint32_t(triangle_index(0, 0)), std::uint32_t(triangle_index(m_n, 0)), std::uint32_t(triangle_index(0, m_n))};
-  }
+  /// Three corners of the whole facet (of its convex hull), not collinear: (P sample, Q sample).
+  std::array<std::pair<Sample, Sample>, 3> facet_corners() const { return m_facet_corners; }
   /// Bound of the diameter of every cell.
   double diameter() const { return m_diameter; }
 
@@ -152,12 +149,13 @@ public:
     return x;
   }
 
-  /// The lattice point of the candidate (p, q) of this pair (interior samples).
+  /// The lattice point of the candidate (p, q) of this piece (interior samples).
   std::size_t index_of(const Sample& p, const Sample& q) const
   {
-    if (m_fp.p.dimension == 1) return edge_index(m_params_p, p) * m_params_q.size() + edge_index(m_params_q, q);
+    if (m_fp.p.dimension == 1)
+      return (edge_index(m_params_p, p) - std::size_t(m_rows.first)) * m_params_q.size() + edge_index(m_params_q, q);
     const Sample& s = m_fp.p.dimension == 0 ? q : p;
-    return triangle_index(s.weights[0], s.weights[1]);
+    return triangle_index(s.weights[0], s.weights[1]) - triangle_index(m_rows.first, 0);
   }
 
   /// The feature of side `which` (0: P, 1: Q) holding the point with weights w over that
@@ -183,6 +181,7 @@ public:
   }
 
 private:
+  /// Index of point (i, j) in the whole triangle lattice, row by row.
   std::size_t triangle_index(std::int32_t i, std::int32_t j) const
   { return std::size_t(i) * (m_n + 1) - std::size_t(i) * (i - 1) / 2 + std::size_t(j); }
 
@@ -203,18 +202,27 @@ private:
     const std::int32_t n = s.triangle_resolution(t);
     m_n = n;
     const Sample vertex{Feature{0, v}, {v, v, v}, {1, 0, 0}, 1};
-    for (std::int32_t i = 0; i <= n; ++i)
+    auto point = [&](std::int32_t i, std::int32_t j) {
+      const Sample st{Feature{2, t}, tri, {i, j, n - i - j}, n}; // origin: the facet (see origin())
+      return t_is_p ? std::make_pair(st, vertex) : std::make_pair(vertex, st);
+    };
+    const std::int32_t first = m_rows.first, last = (std::min)(m_rows.last, n);
+    for (std::int32_t i = first; i <= last; ++i) {
+      if (i == last) m_last_row_start = m_p.size();
       for (std::int32_t j = 0; i + j <= n; ++j) {
-        const Sample st{Feature{2, t}, tri, {i, j, n - i - j}, n}; // origin: the facet (see origin())
-        m_p.push_back(t_is_p ? st : vertex);
-        m_q.push_back(t_is_p ? vertex : st);
+        const auto [p, q] = point(i, j);
+        m_p.push_back(p);
+        m_q.push_back(q);
       }
-    for (std::int32_t i = 0; i < n; ++i)
+    }
+    m_facet_corners = {point(0, 0), point(n, 0), point(0, n)};
+    const std::size_t offset = triangle_index(first, 0);
+    auto at = [&](std::int32_t i, std::int32_t j) { return std::uint32_t(triangle_index(i, j) - offset); };
+    for (std::int32_t i = first; i < last; ++i)
       for (std::int32_t j = 0; i + j < n; ++j) {
-        const auto a = std::uint32_t(triangle_index(i, j)), b = std::uint32_t(triangle_index(i + 1, j)),
-                   c = std::uint32_t(triangle_index(i, j + 1));
+        const auto a = at(i, j), b = at(i + 1, j), c = at(i, j + 1);
         m_cells.push_back({a, b, c});
-        if (i + j + 1 < n) m_cells.push_back({b, c, std::uint32_t(triangle_index(i + 1, j + 1))});
+        if (i + j + 1 < n) m_cells.push_back({b, c, at(i + 1, j + 1)});
       }
     double longest = 0;
     for (int k = 0; k < 3; ++k) {
@@ -240,27 +248,49 @@ private:
     auto sample = [](const Feature& f, const auto& e, const std::pair<std::int32_t, std::int32_t>& k) {
       return Sample{f, {e.v[0], e.v[1], e.v[1]}, {k.second - k.first, k.first, 0}, k.second};
     };
-    for (const auto& kp : m_params_p)
+    const std::size_t np = m_params_p.size(), nq = m_params_q.size();
+    const std::size_t first = std::size_t(m_rows.first), last = (std::min)(std::size_t(m_rows.last), np - 1);
+    for (std::size_t i = first; i <= last; ++i) {
+      if (i == last) m_last_row_start = m_p.size();
       for (const auto& kq : m_params_q) {
-        m_p.push_back(sample(m_fp.p, ep, kp));
+        m_p.push_back(sample(m_fp.p, ep, m_params_p[i]));
         m_q.push_back(sample(m_fp.q, eq, kq));
       }
-    const std::size_t nq = m_params_q.size();
+    }
+    auto corner = [&](std::size_t i, std::size_t j) {
+      return std::make_pair(sample(m_fp.p, ep, m_params_p[i]), sample(m_fp.q, eq, m_params_q[j]));
+    };
+    m_facet_corners = {corner(0, 0), corner(0, nq - 1), corner(np - 1, 0)};
     const bool anti = dot(up, uq) > 0; // then (i + 1, j) - (i, j + 1) is the shorter diagonal
     const double lp = std::sqrt(dot(up, up)), lq = std::sqrt(dot(uq, uq));
     auto param = [](const std::pair<std::int32_t, std::int32_t>& k) { return double(k.first) / k.second; };
-    for (std::size_t i = 0; i + 1 < m_params_p.size(); ++i)
+    for (std::size_t i = first; i < last; ++i)
       for (std::size_t j = 0; j + 1 < nq; ++j) {
-        const auto a = std::uint32_t(i * nq + j), b = std::uint32_t((i + 1) * nq + j), c = std::uint32_t(i * nq + j + 1),
-                   e = std::uint32_t((i + 1) * nq + j + 1);
+        const auto a = std::uint32_t((i - first) * nq + j), b = std::uint32_t((i + 1 - first) * nq + j),
+                   c = std::uint32_t((i - first) * nq + j + 1), e = std::uint32_t((i + 1 - first) * nq + j + 1);
         if (anti) { m_cells.push_back({a, b, c}); m_cells.push_back({b, c, e}); }
         else { m_cells.push_back({a, b, e}); m_cells.push_back({a, c, e}); }
-        const double sp_len = (param(m_params_p[i + 1]) - param(m_params_p[i])) * lp;
-        const double sq_len = (param(m_params_q[j + 1]) - param(m_params_q[j])) * lq;
+      }
+    // The diameter bound of the whole facet's cells (the same for every piece): their sides
+    // and shorter diagonals. The squared diagonal is a convex function of the two sides'
+    // lengths, largest at their extremes.
+    auto extremes = [&](const std::vector<std::pair<std::int32_t, std::int32_t>>& params, double length) {
+      std::pair<double, double> r(length, 0);
+      for (std::size_t i = 0; i + 1 < params.size(); ++i) {
+        const double l = (param(params[i + 1]) - param(params[i])) * length;
+        r = {(std::min)(r.first, l), (std::max)(r.second, l)};
+      }
+      return r;
+    };
+    const auto [p_min, p_max] = extremes(m_params_p, lp);
+    const auto [q_min, q_max] = extremes(m_params_q, lq);
+    m_diameter = (std::max)(p_max, q_max);
+    for (double sp_len : {p_min, p_max})
+      for (double sq_len : {q_min, q_max}) {
         const std::array<double, 3> diag = {up[0] * (sp_len / lp) + (anti ? -1 : 1) * uq[0] * (sq_len / lq),
                                             up[1] * (sp_len / lp) + (anti ? -1 : 1) * uq[1] * (sq_len / lq),
                                             up[2] * (sp_len / lp) + (anti ? -1 : 1) * uq[2] * (sq_len / lq)};
-        m_diameter = (std::max)({m_diameter, sp_len, sq_len, std::sqrt(dot(diag, diag))});
+        m_diameter = (std::max)(m_diameter, std::sqrt(dot(diag, diag)));
       }
   }
 
@@ -268,10 +298,13 @@ private:
   { return f.dimension == 0 || (s.weights[0] != 0 && s.weights[1] != 0 && (f.dimension == 1 || s.weights[2] != 0)); }
 
   Feature_pair m_fp;
+  Row_range m_rows;
   std::int32_t m_n = 0;
   std::vector<std::pair<std::int32_t, std::int32_t>> m_params_p, m_params_q;
   std::vector<Sample> m_p, m_q;
+  std::size_t m_last_row_start = 0; // index of the first point of the last row
   std::vector<std::array<std::uint32_t, 3>> m_cells;
+  std::array<std::pair<Sample, Sample>, 3> m_facet_corners;
   double m_diameter = 0;
 };
 
@@ -365,8 +398,10 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)];
     if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
     if (!started) {
-      const std::vector<std::uint32_t> facet = lattice.corners(); // the first three are not collinear
-      islands->start_facet({point(facet[0]), point(facet[1]), point(facet[2])}, directions, fp.number_of_directions);
+      const auto facet = lattice.facet_corners();
+      std::array<Exact_point, 3> F;
+      for (int k = 0; k < 3; ++k) F[k] = exact_sum(P, facet[k].first, Q, facet[k].second);
+      islands->start_facet(F, directions, fp.number_of_directions);
       started = true;
     }
     const std::optional<Cell_weights> w =
