@@ -23,7 +23,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -37,10 +36,9 @@ public:
   /// absolute value. If d is too small next to `scale` for the rounding margin (or for the
   /// cell indices), the net covers nothing: every boundary candidate is kept.
   Covering_net(double d, double scale)
-    : m_d(d), m_scale(scale), m_margin(256 * std::numeric_limits<double>::epsilon() * (scale + d)),
-      m_cell(d / 2)
+    : m_d(d), m_scale(scale), m_margin(256 * std::numeric_limits<double>::epsilon() * (scale + d)), m_cell(d)
   {
-    m_enabled = m_cell - m_margin > 0 && scale / m_cell < double(std::int64_t(1) << 40);
+    m_enabled = m_d / 2 - m_margin > 0 && scale / m_cell < double(std::int64_t(1) << 40);
   }
 
   /// An empty net with the same parameters.
@@ -50,18 +48,25 @@ public:
   std::size_t size() const { return m_points.size(); }
   const Point3& point(std::size_t i) const { return m_points[i]; }
   /// Lower bound of the distance between two points of the net (exact points).
-  double spacing() const { return m_cell - 2 * m_margin; }
+  double spacing() const { return m_d / 2 - 2 * m_margin; }
 
   /// Is a point of the net closer than r <= d/2 to (the exact point rounded to) x?
   bool covers_within(const Point3& x, double r) const
   {
     const double rr = r - m_margin;
     if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
-    const std::array<std::int64_t, 3> c = cell_of(x);
-    for (const auto& o : neighbour_offsets()) {
-      const auto it = m_cells.find(key({c[0] + o[0], c[1] + o[1], c[2] + o[2]}));
-      if (it == m_cells.end()) continue;
-      for (std::uint32_t n = it->second; n != none; n = m_next[n]) {
+    // Cells have side d: the ball of radius d/2 around x meets the cell of x and, along each
+    // axis, the neighbour on the side of x's nearer face: 8 cells.
+    std::array<std::int64_t, 3> c, step;
+    for (int i = 0; i < 3; ++i) {
+      const double t = x[i] / m_cell;
+      c[i] = std::int64_t(std::floor(t));
+      step[i] = t - double(c[i]) < 0.5 ? -1 : 1;
+    }
+    for (int o = 0; o < 8; ++o) {
+      const std::uint32_t first =
+        m_cells.find(key({c[0] + (o & 1 ? step[0] : 0), c[1] + (o & 2 ? step[1] : 0), c[2] + (o & 4 ? step[2] : 0)}));
+      for (std::uint32_t n = first; n != none; n = m_next[n]) {
         const Point3& y = m_points[n];
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
         if (dx * dx + dy * dy + dz * dz < rr * rr) return true;
@@ -71,37 +76,72 @@ public:
   }
 
   /// Is a point of the net closer than d/2 to (the exact point rounded to) x?
-  bool covers(const Point3& x) const { return covers_within(x, m_cell); }
+  bool covers(const Point3& x) const { return covers_within(x, m_d / 2); }
 
   /// Adds x to the net (the caller has checked that it is not covered).
   void insert(const Point3& x)
   {
     if (!m_enabled) return;
-    auto [it, added] = m_cells.emplace(key(cell_of(x)), none);
+    std::uint32_t& last = m_cells.at(key(cell_of(x)));
     m_points.push_back(x);
-    m_next.push_back(it->second);
-    it->second = std::uint32_t(m_points.size() - 1);
+    m_next.push_back(last);
+    last = std::uint32_t(m_points.size() - 1);
   }
 
 private:
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
-  /// The 27 cells around a cell, nearest first.
-  static const std::array<std::array<std::int64_t, 3>, 27>& neighbour_offsets()
+  /// Cell -> last point inserted there: open addressing with linear probing (the net is
+  /// queried for every candidate).
+  class Cell_table
   {
-    static const std::array<std::array<std::int64_t, 3>, 27> offsets = [] {
-      std::array<std::array<std::int64_t, 3>, 27> o{};
-      std::size_t n = 0;
-      for (std::int64_t i = -1; i <= 1; ++i)
-        for (std::int64_t j = -1; j <= 1; ++j)
-          for (std::int64_t k = -1; k <= 1; ++k) o[n++] = {i, j, k};
-      std::stable_sort(o.begin(), o.end(), [](const auto& a, const auto& b) {
-        return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] < b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-      });
-      return o;
-    }();
-    return offsets;
-  }
+  public:
+    /// The value of `key`, or `none`.
+    std::uint32_t find(std::uint64_t key) const
+    {
+      if (m_keys.empty()) return none;
+      for (std::size_t i = slot(key);; i = (i + 1) & (m_keys.size() - 1)) {
+        if (m_keys[i] == key) return m_values[i];
+        if (m_keys[i] == empty) return none;
+      }
+    }
+    /// The value of `key`, inserted as `none` if absent.
+    std::uint32_t& at(std::uint64_t key)
+    {
+      if (2 * (m_size + 1) > m_keys.size()) grow();
+      std::size_t i = slot(key);
+      for (; m_keys[i] != key; i = (i + 1) & (m_keys.size() - 1))
+        if (m_keys[i] == empty) {
+          m_keys[i] = key;
+          m_values[i] = none;
+          ++m_size;
+          break;
+        }
+      return m_values[i];
+    }
+
+  private:
+    static constexpr std::uint64_t empty = std::numeric_limits<std::uint64_t>::max(); // keys have 63 bits
+    std::size_t slot(std::uint64_t key) const
+    { return std::size_t((key * 0x9E3779B97F4A7C15ull) >> 32) & (m_keys.size() - 1); }
+    void grow()
+    {
+      std::vector<std::uint64_t> keys(m_keys.empty() ? 16 : 2 * m_keys.size(), empty);
+      std::vector<std::uint32_t> values(keys.size(), none);
+      keys.swap(m_keys);
+      values.swap(m_values);
+      for (std::size_t j = 0; j < keys.size(); ++j)
+        if (keys[j] != empty) {
+          std::size_t i = slot(keys[j]);
+          while (m_keys[i] != empty) i = (i + 1) & (m_keys.size() - 1);
+          m_keys[i] = keys[j];
+          m_values[i] = values[j];
+        }
+    }
+    std::vector<std::uint64_t> m_keys;
+    std::vector<std::uint32_t> m_values;
+    std::size_t m_size = 0;
+  };
 
   std::array<std::int64_t, 3> cell_of(const Point3& x) const
   {
@@ -118,7 +158,7 @@ private:
 
   double m_d, m_scale, m_margin, m_cell;
   bool m_enabled;
-  std::unordered_map<std::uint64_t, std::uint32_t> m_cells; // cell -> last point inserted there
+  Cell_table m_cells;
   std::vector<Point3> m_points;
   std::vector<std::uint32_t> m_next; // previous point of the same cell
 };
