@@ -35,7 +35,10 @@
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <set>
 #include <utility>
 #include <limits>
@@ -50,7 +53,10 @@ namespace internal {
 /// sphere through the triangle), but infinity (refused) for a triangle that makes an angle of
 /// more than 80 degrees with a vertex normal (the triangle oriented by the sum of its vertex
 /// normals). A zero normal (a point on a crease or a corner, where the normal is not unique)
-/// accepts any triangle.
+/// accepts any triangle. Equal radii are frequent (lattice points on flat faces are
+/// cospherical), and CGAL breaks such ties by the addresses of its border elements, which
+/// depend on what the process allocated before: the radius is scaled by 1 + 2^-40 h, h in
+/// [0, 1) a hash of the triangle's vertices, so that the mesh does not.
 struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
@@ -73,7 +79,12 @@ struct Normal_consistent_priority
     const double length = std::sqrt(t.squared_length());
     for (const Vector& nk : n)
       if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return std::numeric_limits<double>::infinity();
-    return radius;
+    std::array<std::uint64_t, 3> id = {std::uint64_t(v[0]->id()), std::uint64_t(v[1]->id()), std::uint64_t(v[2]->id())};
+    std::sort(id.begin(), id.end());
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (std::uint64_t i : id) h = (h ^ i) * 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 31;
+    return radius * (1 + std::ldexp(double(h >> 11), -93)); // (h >> 11) / 2^53 in [0, 1), times 2^-40
   }
 };
 
