@@ -265,6 +265,17 @@ inline std::string points_output_path(const Arguments& args)
   return path;
 }
 
+/// Throws Usage_error unless `path` ends in .off, .obj, .ply or .stl (mesh.cpp).
+void check_mesh_path(const std::string& path);
+
+/// The -o path of a command that writes a mesh (it must be there): .off, .obj, .ply or .stl.
+inline std::string mesh_output_path(const Arguments& args)
+{
+  const std::string path = args.values.at("-o");
+  check_mesh_path(path);
+  return path;
+}
+
 /// The inputs of a sum, read and checked.
 struct Sum_input
 {
@@ -430,10 +441,22 @@ inline std::vector<Record> compute_sum(
 /// A closed mesh of the boundary (CGAL::point_minkowski_sum_mesh(), mesh.cpp), with a
 /// progress bar; refused as compute_sum() is. Throws Mesh_reconstruction_failed.
 Mesh compute_mesh(const Sum_input& in, CGAL::Pmsum::Mesh_statistics& ms);
+/// A mesh written by a command that can write points or a mesh (offset, sweep: mesh.cpp):
+/// the JSON object of its checks and sizes, the note for stderr ("a mesh of V vertices and T
+/// triangles (S shells, ...)"), and the counters of the sum it was made from.
+struct Written_mesh
+{
+  Json summary;
+  std::string note;
+  CGAL::Pmsum::Statistics sum;
+};
+/// Writes to `file` a closed mesh of the boundary of in.P + in.Q (compute_mesh()).
+Written_mesh write_sum_mesh(const Sum_input& in, Output_file& file);
+/// Writes to `file` a closed mesh of the volume swept by P along `path` (CGAL::point_sweep_mesh()).
+Written_mesh write_sweep_mesh(const Mesh& P, const std::vector<K::Point_3>& path, double d, int threads,
+                              Output_file& file);
 /// The JSON fields of a mesh's sizes and checks (mesh.cpp).
 Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms);
-/// Throws Usage_error unless `path` ends in .off, .obj, .ply or .stl (mesh.cpp).
-void check_mesh_path(const std::string& path);
 /// Writes `mesh` in the format of its extension (mesh.cpp).
 void write_mesh(Output_file& file, const Mesh& mesh);
 

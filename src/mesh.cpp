@@ -8,6 +8,7 @@
 #include "cli_common.h"
 
 #include <CGAL_pmsum/point_minkowski_sum_mesh.h>
+#include <CGAL_pmsum/point_sweep_mesh.h>
 
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
@@ -26,6 +27,17 @@ Mesh compute_mesh(const Sum_input& in, CGAL::Pmsum::Mesh_statistics& ms)
   return mesh;
 }
 
+namespace {
+
+std::string mesh_note(const CGAL::Pmsum::Mesh_statistics& ms)
+{
+  return "a mesh of " + std::to_string(ms.vertices) + " vertices and " + std::to_string(ms.triangles) + " triangles (" +
+         std::to_string(ms.checks.shells) + " shells, " + std::to_string(ms.checks.void_shells) + " voids" +
+         (ms.refinements ? ", d halved " + std::to_string(ms.refinements) + " times" : std::string()) + ")";
+}
+
+} // namespace
+
 Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
 {
   const CGAL::Pmsum::Mesh_checks& c = ms.checks;
@@ -36,6 +48,25 @@ Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
     .integer("shells", c.shells).integer("void_shells", c.void_shells).num("point_distance", ms.point_distance)
     .num("boundary_to_mesh_bound", ms.boundary_to_mesh_bound());
   return j;
+}
+
+Written_mesh write_sum_mesh(const Sum_input& in, Output_file& file)
+{
+  CGAL::Pmsum::Mesh_statistics ms;
+  write_mesh(file, compute_mesh(in, ms));
+  return {mesh_summary(ms), mesh_note(ms), ms.sum};
+}
+
+Written_mesh write_sweep_mesh(const Mesh& P, const std::vector<K::Point_3>& path, double d, int threads,
+                              Output_file& file)
+{
+  CGAL::Pmsum::Mesh_statistics ms;
+  Mesh mesh;
+  with_threads(threads, [&](auto tag) {
+    CGAL::point_sweep_mesh<decltype(tag)>(P, path, d, mesh, CGAL::parameters::mesh_statistics(ms));
+  });
+  write_mesh(file, mesh);
+  return {mesh_summary(ms), mesh_note(ms), ms.sum};
 }
 
 void check_mesh_path(const std::string& path)
@@ -94,8 +125,7 @@ int command_mesh(int argc, char** argv)
   const Arguments args(argc, argv, 2, valued, flags);
   if (args.flag("--help") || args.flag("-h")) { std::cout << mesh_help; return 0; }
   if (!args.has("-o")) throw Usage_error("mesh needs -o OUT");
-  const std::string out_path = args.values.at("-o");
-  check_mesh_path(out_path);
+  const std::string out_path = mesh_output_path(args);
   std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
   if (args.has("--json")) outputs.push_back({"--json", args.values.at("--json")});
   Output_files files = agreed([&] { return Output_files(outputs, args.positional); });
@@ -117,10 +147,8 @@ int command_mesh(int argc, char** argv)
     write_json(files["--json"], j);
   }
   if (!in.quiet)
-    std::cerr << "pmsum: a mesh of " << ms.vertices << " vertices and " << ms.triangles << " triangles ("
-              << ms.checks.shells << " shells, " << ms.checks.void_shells << " voids"
-              << (ms.refinements ? ", d halved " + std::to_string(ms.refinements) + " times" : std::string())
-              << ") written to " << out_path << " (" << std::setprecision(3) << seconds_since(t_start) << " s)\n";
+    std::cerr << "pmsum: " << mesh_note(ms) << " written to " << out_path << " (" << std::setprecision(3)
+              << seconds_since(t_start) << " s)\n";
   return 0;
 }
 

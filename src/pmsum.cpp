@@ -140,18 +140,23 @@ const char* const offset_help =
   "  --erode               erosion instead of offset (MESH must be closed)\n"
   "  --sphere-error E      relative error of the polyhedral ball (default 0.02)\n"
   "  -o OUT                .ply or .xyz (erosion: normals are 0)\n"
+  "  --mesh                write a closed mesh of the offset's boundary instead, as pmsum mesh\n"
+  "                        does (its vertices are the points; -o OUT: .off, .obj, .ply or .stl;\n"
+  "                        exit code 6 if no valid mesh is made; not with --erode)\n"
   "  --json FILE           summary\n"
   "  --threads N, --quiet  as for sum\n";
 
 int command_offset(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"-r", "-d", "-o", "--sphere-error", "--json", "--threads"},
-                       {"--cube", "--erode", "--relative", "--quiet", "--help", "-h"});
+                       {"--cube", "--erode", "--mesh", "--relative", "--quiet", "--help", "-h"});
   if (args.flag("--help") || args.flag("-h")) { std::cout << offset_help; return 0; }
   if (args.positional.size() != 1) throw Usage_error("offset needs one mesh");
   for (const char* o : {"-r", "-d", "-o"})
     if (!args.has(o)) throw Usage_error(std::string("offset needs ") + o);
-  const std::string out_path = points_output_path(args);
+  const bool as_mesh = args.flag("--mesh");
+  if (as_mesh && args.flag("--erode")) throw Usage_error("--mesh makes a mesh of an offset, not of an erosion");
+  const std::string out_path = as_mesh ? mesh_output_path(args) : points_output_path(args);
   double r = args.number("-r"), d = args.number("-d");
   if (!(r > 0) || !std::isfinite(r) || !(d > 0) || !std::isfinite(d)) throw Usage_error("-r and -d must be positive numbers");
   const double error = args.has("--sphere-error") ? args.number("--sphere-error") : 0.02;
@@ -177,31 +182,36 @@ int command_offset(int argc, char** argv)
   }
   std::vector<Oriented_point> points;
   CGAL::Pmsum::Statistics stats;
+  std::optional<Written_mesh> written;
   if (args.flag("--erode")) {
     if (!CGAL::is_closed(P)) throw Error("--erode needs a closed mesh");
     std::vector<K::Point_3> pts;
     CGAL::point_erosion<CGAL::Sequential_tag>(P, B, d, std::back_inserter(pts));
     for (const auto& p : pts) points.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
-  } else {
+  } else { // the offset is the sum P + B
     Sum_input in;
     in.P = P;
     in.Q = B;
     in.d = d;
     in.quiet = quiet;
     if (args.has("--threads")) in.threads = int(args.number("--threads"));
-    points = oriented_points(compute_sum(in, stats));
+    if (as_mesh) written = write_sum_mesh(in, files["-o"]);
+    else points = oriented_points(compute_sum(in, stats));
   }
-  write_points(files["-o"], points);
+  if (!as_mesh) write_points(files["-o"], points);
   if (args.has("--json")) {
     Json j;
     j.str("command", "offset").str("mesh", args.positional[0]).boolean("erode", args.flag("--erode"))
       .str("structuring_element", args.flag("--cube") ? "cube" : "icosphere").num("r", r)
-      .num("ball_inradius", inner).integer("ball_faces", B.number_of_faces()).num("d", d)
-      .integer("output_points", points.size()).num("seconds", seconds_since(start));
+      .num("ball_inradius", inner).integer("ball_faces", B.number_of_faces()).num("d", d);
+    if (written) j.integer("output_points", written->sum.output_points).object("mesh", written->summary);
+    else j.integer("output_points", points.size());
+    j.num("seconds", seconds_since(start));
     write_json(files["--json"], j);
   }
   if (!quiet)
-    std::cerr << "pmsum: " << points.size() << " points written to " << out_path << "; every point at distance in ["
+    std::cerr << "pmsum: " << (written ? written->note : std::to_string(points.size()) + " points") << " written to "
+              << out_path << "; every " << (written ? "vertex" : "point") << " at distance in ["
               << std::setprecision(6) << inner << ", " << r << "] from the surface\n";
   return 0;
 }
@@ -274,17 +284,20 @@ const char* const sweep_help =
   "Points covering the boundary of the volume swept by MESH translating along a polyline\n"
   "(MESH + path), every point exactly on it. FILE: one point 'x y z' per line, in order\n"
   "(the positions of MESH's origin). With --relative, D is a fraction of the diagonal of\n"
-  "the swept volume's bounding box.\n";
+  "the swept volume's bounding box. With --mesh, a closed mesh of that boundary is written\n"
+  "instead, as pmsum mesh does (its vertices are the points; -o OUT: .off, .obj, .ply or\n"
+  ".stl; exit code 6 if no valid mesh is made).\n";
 
 int command_sweep(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"--path", "-d", "-o", "--json", "--threads"},
-                       {"--relative", "--quiet", "--help", "-h"});
+                       {"--mesh", "--relative", "--quiet", "--help", "-h"});
   if (args.flag("--help") || args.flag("-h")) { std::cout << sweep_help; return 0; }
   if (args.positional.size() != 1) throw Usage_error("sweep needs one mesh");
   for (const char* o : {"--path", "-d", "-o"})
     if (!args.has(o)) throw Usage_error(std::string("sweep needs ") + o);
-  const std::string out_path = points_output_path(args);
+  const bool as_mesh = args.flag("--mesh");
+  const std::string out_path = as_mesh ? mesh_output_path(args) : points_output_path(args);
   double d = args.number("-d");
   if (!(d > 0) || !std::isfinite(d)) throw Usage_error("-d must be a positive number");
   std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out_path}};
@@ -314,21 +327,31 @@ int command_sweep(int argc, char** argv)
   }
   std::vector<K::Point_3> pts;
   CGAL::Pmsum::Statistics stats;
+  std::optional<Written_mesh> written;
   const int threads = args.has("--threads") ? int(args.number("--threads")) : 0;
-  with_threads(threads, [&](auto tag) {
-    CGAL::point_sweep<decltype(tag)>(P, path, d, std::back_inserter(pts), CGAL::parameters::statistics(stats));
-  });
-  std::vector<Oriented_point> out;
-  for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
-  write_points(files["-o"], out);
+  if (as_mesh) {
+    written = write_sweep_mesh(P, path, d, threads, files["-o"]);
+    stats = written->sum;
+  } else {
+    with_threads(threads, [&](auto tag) {
+      CGAL::point_sweep<decltype(tag)>(P, path, d, std::back_inserter(pts), CGAL::parameters::statistics(stats));
+    });
+    std::vector<Oriented_point> out;
+    for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
+    write_points(files["-o"], out);
+  }
   if (args.has("--json")) {
     Json j;
     j.str("command", "sweep").str("mesh", args.positional[0]).str("path", args.values.at("--path"))
       .integer("path_points", path.size()).num("d", d).integer("candidates", stats.candidates)
-      .integer("cd_queries", stats.cd_queries).integer("output_points", pts.size()).num("seconds", seconds_since(start));
+      .integer("cd_queries", stats.cd_queries).integer("output_points", stats.output_points);
+    if (written) j.object("mesh", written->summary);
+    j.num("seconds", seconds_since(start));
     write_json(files["--json"], j);
   }
-  if (!args.flag("--quiet")) std::cerr << "pmsum: " << pts.size() << " points written to " << out_path << "\n";
+  if (!args.flag("--quiet"))
+    std::cerr << "pmsum: " << (written ? written->note : std::to_string(pts.size()) + " points") << " written to "
+              << out_path << "\n";
   return 0;
 }
 

@@ -127,6 +127,27 @@ printf '0 0 0\n1 0 0\n' > "$work/path.txt"
 if awk '{ if ($1 < 0 || $1 > 2 || $2 < 0 || $2 > 1 || $3 < 0 || $3 > 1) bad = 1 } END { exit bad }' "$work/sweep.xyz"; then ok; else ko "sweep bounds"; fi
 printf '0 0 0\nnot numbers\n' > "$work/badpath.txt"
 expect_fail 1 "expected three numbers" -- sweep "$cube" --path "$work/badpath.txt" -d 0.1 -o "$work/out.xyz"
+# offset --mesh and sweep --mesh: closed meshes (OFF header, the JSON's checks); every vertex of
+# the offset's mesh within [inradius, r] of the cube, every vertex of the sweep's in its box
+"$pmsum" offset "$cube" -r 0.1 -d 0.05 --mesh -o "$work/offm.off" --json "$work/offm.json" --quiet \
+  && grep -q '"closed": true' "$work/offm.json" && grep -q '"shells": 1,' "$work/offm.json" && ok || ko "offset --mesh"
+lo=$(grep -o '"ball_inradius": [0-9.e+-]*' "$work/offm.json" | cut -d' ' -f2)
+# the vertices of an OFF file: the first N non-empty lines after its counts
+off_vertices() { awk 'NR == 2 { n = $1; next } NR > 2 && NF > 0 && k < n { print; k++ }' "$1"; }
+if [ "$(head -1 "$work/offm.off")" = OFF ] && off_vertices "$work/offm.off" | awk -v lo="$lo" '
+     function d(x) { return x < 0 ? -x : (x > 1 ? x - 1 : 0) }
+     { e = sqrt(d($1)^2 + d($2)^2 + d($3)^2); if (e < lo - 1e-9 || e > 0.1 + 1e-9) bad = 1; n++ } END { exit bad || n == 0 }'
+then ok; else ko "offset --mesh: vertex distances"; fi
+# (an ellipsoid of semi-axes 0.2, 0.15, 0.1 swept along x by 1: a cube's corners, swept, are
+# cut off by the reconstruction at every refinement, and refused: see the manual's limits)
+"$pmsum" generate ellipsoid -o "$work/ellipsoid.off"
+"$pmsum" sweep "$work/ellipsoid.off" --path "$work/path.txt" -d 0.03 --mesh -o "$work/sweepm.off" --json "$work/sweepm.json" --quiet \
+  && grep -q '"closed": true' "$work/sweepm.json" && grep -q '"shells": 1,' "$work/sweepm.json" && ok || ko "sweep --mesh"
+if off_vertices "$work/sweepm.off" | awk '{ if ($1 < -0.2 - 1e-9 || $1 > 1.2 + 1e-9 || $2 < -0.15 - 1e-9 || $2 > 0.15 + 1e-9 || $3 < -0.1 - 1e-9 || $3 > 0.1 + 1e-9) bad = 1; n++ } END { exit bad || n == 0 }'
+then ok; else ko "sweep --mesh: vertex bounds"; fi
+expect_fail 2 "not of an erosion"            -- offset "$cube" -r 0.1 -d 0.05 --mesh --erode -o "$work/out.off"
+expect_fail 2 ".off, .obj, .ply or .stl"     -- offset "$cube" -r 0.1 -d 0.05 --mesh -o "$work/out.xyz"
+expect_fail 2 ".off, .obj, .ply or .stl"     -- sweep "$cube" --path "$work/path.txt" -d 0.1 --mesh -o "$work/out.xyz"
 
 # plan: the robot (unit cube) out of a pocket under a lid; every vertex printed, start and goal
 # at the ends; an unreachable goal (outside a closed room) exits 5; overlapping start exits 1.

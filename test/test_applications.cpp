@@ -433,6 +433,8 @@ TEST_CASE("records into a Point_set_3: points, normals, provenance, PLY", "[appl
 }
 
 #include <CGAL_pmsum/point_minkowski_sum_mesh.h>
+#include <CGAL_pmsum/point_offset_mesh.h>
+#include <CGAL_pmsum/point_sweep_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
@@ -614,4 +616,78 @@ TEST_CASE("mesh of a thin part: refined until valid, or an error and no mesh", "
   CHECK(num_faces(thin) == 0);
   CHECK(ms.refinements == 2);
   CHECK((!ms.checks.valid() || ms.checks.shells == 0 || ms.point_distance >= ms.covering_distance));
+}
+
+TEST_CASE("mesh of an offset: valid, every vertex between the ball's inradius and r from the box",
+          "[applications][mesh][offset]")
+{
+  const double r = 0.25, d = 0.1;
+  Mesh ball;
+  const double inner = CGAL::make_icosphere(r, 0.02, ball);
+  const Mesh cube = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  Mesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::point_offset_mesh(cube, ball, d, m, CGAL::parameters::mesh_statistics(ms));
+  const auto c = CGAL::Pmsum::check_mesh(m);
+  REQUIRE(c.valid());
+  CHECK(c.shells == 1);
+  CHECK(ms.vertices == vertices(m).size());
+  CHECK(ms.point_distance < ms.covering_distance);
+  double nearest = HUGE_VAL, farthest = 0;
+  for (auto v : m.vertices()) {
+    nearest = (std::min)(nearest, distance_to_box_surface(m.point(v), 0, 1));
+    farthest = (std::max)(farthest, distance_to_box_surface(m.point(v), 0, 1));
+  }
+  CHECK(nearest >= inner - 1e-12);
+  CHECK(farthest <= r + 1e-12);
+  // The offset is convex and the vertices lie on its boundary: the mesh's volume is below the
+  // round offset's (Steiner: 1 + 6 r + 3 pi r^2 + 4/3 pi r^3), and above the one of radius
+  // `inner` less the caps its triangles cut off (a sagitta of (d/2)^2 / (2 inner) at most).
+  auto steiner = [](double s) { return 1 + 6 * s + 3 * CGAL_PI * s * s + 4. / 3 * CGAL_PI * s * s * s; };
+  const double volume = CGAL::Polygon_mesh_processing::volume(m);
+  CHECK(volume < steiner(r));
+  CHECK(volume > steiner(inner - d * d / (8 * inner)));
+}
+
+TEST_CASE("mesh of a sweep: valid, every vertex on the exact swept polytope, its volume", "[applications][mesh][sweep]")
+{
+  // an icosphere swept along (2, 1, 0.5): the hull of the icosphere at both ends
+  Mesh P;
+  CGAL::make_icosphere(0.5, 0.02, P);
+  const std::vector<IK::Point_3> path = {IK::Point_3(0, 0, 0), IK::Point_3(2, 1, 0.5)};
+  const double d = 0.1;
+  Mesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::point_sweep_mesh(P, path, d, m, CGAL::parameters::mesh_statistics(ms));
+  const auto c = CGAL::Pmsum::check_mesh(m);
+  REQUIRE(c.valid());
+  CHECK(c.shells == 1);
+  CHECK(ms.point_distance < ms.covering_distance);
+  std::vector<IK::Point_3> corners;
+  for (auto v : P.vertices())
+    for (const IK::Point_3& t : path) corners.push_back(P.point(v) + (t - CGAL::ORIGIN));
+  Mesh hull;
+  CGAL::convex_hull_3(corners.begin(), corners.end(), hull);
+  // every vertex on the hull's boundary (rounding aside): on one facet plane, inside all
+  std::vector<IK::Plane_3> planes;
+  for (auto f : hull.faces()) {
+    std::vector<IK::Point_3> t;
+    for (auto v : vertices_around_face(hull.halfedge(f), hull)) t.push_back(hull.point(v));
+    planes.emplace_back(t[0], t[1], t[2]);
+  }
+  double worst = 0;
+  for (auto v : m.vertices()) {
+    double outside = -HUGE_VAL; // largest signed distance to a facet plane: 0 on the boundary
+    for (const auto& h : planes) {
+      const IK::Vector_3 n = h.orthogonal_vector();
+      outside = (std::max)(outside, (h.a() * m.point(v).x() + h.b() * m.point(v).y() + h.c() * m.point(v).z() + h.d()) /
+                                      std::sqrt(n.squared_length()));
+    }
+    worst = (std::max)(worst, std::abs(outside));
+  }
+  CHECK(worst < 1e-12);
+  // inscribed in the convex hull: a smaller volume, by the corners its triangles cut
+  const double volume = CGAL::Polygon_mesh_processing::volume(m), exact = CGAL::Polygon_mesh_processing::volume(hull);
+  CHECK(volume <= exact);
+  CHECK(volume > 0.99 * exact);
 }

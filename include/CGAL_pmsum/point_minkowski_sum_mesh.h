@@ -52,13 +52,94 @@ struct Mesh_statistics
 
 namespace internal {
 
+/// The number of outer shells (not voids) of a mesh, and the most the sum can have: it has at
+/// most one connected piece per pair of connected components of P and Q (the sum of two
+/// connected sets is connected), so more outer shells are pieces of the reconstruction's own
+/// (a sharp corner cut off, a bubble that bubble removal left).
+inline std::size_t outer_shells(const Mesh_checks& c) { return c.shells - c.void_shells; }
+inline std::size_t most_outer_shells(const Mesh_data& mp, const Mesh_data& mq)
+{ return mp.components.size() * mq.components.size(); }
+
 /// Why the mesh of the last level was refused, for Mesh_reconstruction_failed.
-inline std::string last_failure(const Mesh_statistics& ms)
+inline std::string last_failure(const Mesh_statistics& ms, std::size_t most_outer)
 {
   if (ms.checks.valid() && ms.checks.shells == 0) return "was empty";
   if (!ms.checks.valid()) return "was " + ms.checks.failures();
+  if (outer_shells(ms.checks) > most_outer)
+    return "had " + std::to_string(outer_shells(ms.checks)) + " outer shells, more than the sum has (at most " +
+           std::to_string(most_outer) + ")";
   return "left output points up to " + std::to_string(ms.point_distance / ms.covering_distance) +
          " times that d from the mesh (a part of the boundary missing)";
+}
+
+/// The start of every mesh function: checks the parameters that a mesh refuses (it meshes the
+/// covering net, not every candidate, and its bound rests on the covering: trim and island
+/// points), clears `mesh`, and returns the statistics to fill, reset (the named parameter
+/// `mesh_statistics`, else `local`).
+template <class NamedParameters, class TriangleMesh>
+Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_statistics& local, const char* function)
+{
+  static_assert(!has_any_parameter<NamedParameters, internal_np::use_covering_net_t, internal_np::roadmap_neighbors_t>(),
+                "CGAL_pmsum: a mesh of the sum meshes the covering net; use_covering_net and roadmap_neighbors "
+                "are not parameters of it");
+  if (!parameters::choose_parameter(parameters::get_parameter(np, internal_np::use_trim_points), true) ||
+      !parameters::choose_parameter(parameters::get_parameter(np, internal_np::search_islands), true))
+    throw Invalid_input(std::string(function) + " needs the covering's trim and island points "
+                        "(use_trim_points and search_islands true): its bound rests on the covering");
+  Mesh_statistics& ms = *parameters::choose_parameter(parameters::get_parameter(np, internal_np::mesh_statistics), &local);
+  ms = Mesh_statistics();
+  clear(mesh);
+  return ms;
+}
+
+/// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
+/// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
+/// outer shells against most_outer_shells(), the points' distance to the mesh); if a check
+/// fails, d is halved, twice at most, reusing the coarser decisions; then
+/// Mesh_reconstruction_failed.
+/// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
+/// stage began. GT: the kernel in which the points are computed.
+template <class GT, class ConcurrencyTag, class TriangleMesh>
+void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const Mesh_data& mq, double d,
+                 Statistics& stats, Clock::time_point start, TriangleMesh& mesh, Mesh_statistics& ms)
+{
+  using Point = typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const int max_refinements = 2;
+  for (int level = 0; level <= max_refinements; ++level) {
+    const double dl = d / double(1 << level);
+    const auto t_sum = Clock::now();
+    std::vector<Point> points;
+    std::vector<Epick::Vector_3> normals;
+    stats = Statistics();
+    pipeline.run_level(dl, stats, [&](const Sample& sp, const Sample& sq, const Direction& direction, const Trim* trim) {
+      points.emplace_back(output_point<GT>(mp, mq, sp, sq, trim));
+      // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is given.
+      if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
+      else normals.push_back(output_normal<Epick>(mp, mq, direction));
+    }, start);
+    start = Clock::now();
+    ms.sum = stats;
+    ms.seconds_sum += seconds_since(t_sum);
+    const auto t_mesh = Clock::now();
+    ms.checks = reconstruct_mesh<ConcurrencyTag>(points, normals, dl, mesh);
+    ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
+                                          : std::numeric_limits<double>::infinity();
+    ms.seconds_mesh += seconds_since(t_mesh);
+    ms.covering_distance = dl;
+    ms.refinements = level;
+    if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer_shells(mp, mq) &&
+        ms.point_distance < dl) {
+      ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
+      ms.triangles = faces(mesh).size();
+      return;
+    }
+    clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
+  }
+  throw Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " + std::to_string(d) +
+                                   " down to " + std::to_string(ms.covering_distance) + "): the last reconstruction " +
+                                   last_failure(ms, most_outer_shells(mp, mq)) + ", so none is returned");
 }
 
 } // namespace internal
@@ -69,8 +150,10 @@ inline std::string last_failure(const Mesh_statistics& ms)
 /// vertices are output points of point_minkowski_sum() (exactly on the boundary, rounded
 /// only if the mesh's kernel is inexact), joined by CGAL's advancing-front surface
 /// reconstruction. The mesh returned is closed, 2-manifold, free of self-intersections and
-/// bounds a volume (outer shells outward, voids inward), and every output point of the sum
-/// lies closer than `d'` to it (`d'` the covering distance used): if the reconstruction at `d`
+/// bounds a volume (outer shells outward, voids inward), it has no more outer shells than the
+/// sum can have (one per pair of connected components of `P` and `Q`), and every output point
+/// of the sum lies closer than `d'` to it (`d'` the covering distance used): if the
+/// reconstruction at `d`
 /// fails a check, the sum is recomputed at `d/2`, then `d/4`; if that fails too,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
@@ -105,72 +188,17 @@ void point_minkowski_sum_mesh(const PolygonMeshP& P, const PolygonMeshQ& Q, doub
                               const NamedParametersQ& np_q = parameters::default_values())
 {
   namespace in = Pmsum::internal;
-  static_assert(!in::has_any_parameter<NamedParametersP, Pmsum::internal_np::use_covering_net_t,
-                                       Pmsum::internal_np::roadmap_neighbors_t>(),
-                "CGAL_pmsum: point_minkowski_sum_mesh() meshes the covering net; use_covering_net and "
-                "roadmap_neighbors are not parameters of it");
-  if (!parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::use_trim_points), true) ||
-      !parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::search_islands), true))
-    throw Pmsum::Invalid_input("point_minkowski_sum_mesh() needs the covering's trim and island points "
-                               "(use_trim_points and search_islands true): its bound rests on the covering");
-  using Point = typename boost::property_traits<
-    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   Pmsum::Mesh_statistics local;
-  Pmsum::Mesh_statistics& ms =
-    *parameters::choose_parameter(parameters::get_parameter(np_p, Pmsum::internal_np::mesh_statistics), &local);
-  ms = Pmsum::Mesh_statistics();
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const int max_refinements = 2;
+  Pmsum::Mesh_statistics& ms = in::start_mesh(np_p, mesh, local, "point_minkowski_sum_mesh()");
   // One input stage and one pipeline for every level: a refinement reuses the coarser
   // level's decisions (coarse to fine, as point_minkowski_sum_coarse_to_fine()).
   const auto t_input = in::Clock::now();
   Pmsum::Statistics local_stats;
   const in::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(P, Q, d, np_p, np_q,
                                                                                             local_stats);
-  using Record = typename decltype(sum)::Record;
   in::Pipeline<ConcurrencyTag> pipeline(sum.mp, sum.mq, sum.options, /*coarse_to_fine=*/true);
   ms.seconds_sum += in::seconds_since(t_input);
-  in::Clock::time_point start = sum.start;
-  for (int level = 0; level <= max_refinements; ++level) {
-    const double dl = d / double(1 << level);
-    const auto t_sum = in::Clock::now();
-    std::vector<Record> records;
-    auto out = std::back_inserter(records);
-    sum.stats = Pmsum::Statistics();
-    pipeline.run_level(dl, sum.stats, sum.make_emit(out), start);
-    start = in::Clock::now();
-    ms.sum = sum.stats;
-    std::vector<Point> points;
-    std::vector<Epick::Vector_3> normals;
-    points.reserve(records.size());
-    normals.reserve(records.size());
-    for (const Record& r : records) {
-      points.emplace_back(r.point);
-      // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is given.
-      if (r.origin_p.dimension + r.origin_q.dimension <= 1 || r.origin_p.rational_weights || r.origin_q.rational_weights)
-        normals.push_back(CGAL::NULL_VECTOR);
-      else normals.emplace_back(CGAL::to_double(r.normal.x()), CGAL::to_double(r.normal.y()), CGAL::to_double(r.normal.z()));
-    }
-    ms.seconds_sum += in::seconds_since(t_sum);
-    const auto t_mesh = in::Clock::now();
-    ms.checks = in::reconstruct_mesh<ConcurrencyTag>(points, normals, dl, mesh);
-    ms.point_distance = ms.checks.valid() ? in::largest_distance_to_mesh(points, mesh)
-                                          : std::numeric_limits<double>::infinity();
-    ms.seconds_mesh += in::seconds_since(t_mesh);
-    ms.covering_distance = dl;
-    ms.refinements = level;
-    if (ms.checks.valid() && ms.checks.shells > 0 && ms.point_distance < dl) {
-      ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
-      ms.triangles = faces(mesh).size();
-      return;
-    }
-    clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
-  }
-  clear(mesh);
-  throw Pmsum::Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " +
-                                          std::to_string(d) + " down to " + std::to_string(ms.covering_distance) +
-                                          "): the last reconstruction " + in::last_failure(ms) +
-                                          ", so none is returned");
+  in::mesh_levels<typename decltype(sum)::GT>(pipeline, sum.mp, sum.mq, d, sum.stats, sum.start, mesh, ms);
 }
 
 } // namespace CGAL
