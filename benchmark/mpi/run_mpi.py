@@ -13,8 +13,9 @@ Open MPI's mpirun, and Debian's python3-matplotlib. Writes into benchmark/mpi/re
                 - the partitioner alone (benchmark/mpi/balance.cpp, built on demand) on real models
                   at a fine d, for K = 1 ... 256: the largest rank's share of the work x K (1 is a
                   perfect balance), and the critical share x K (the ranks wait for each other after
-                  every wave of feature pairs, so the decision stage takes at least that share of
-                  one process's time: the speed-up of the decisions is at most 1 / critical share)
+                  every wave of pieces of feature pairs, so the decision stage takes at least that
+                  share of one process's time: the speed-up of the decisions is at most
+                  1 / critical share; candidates stand for the work, as in the partitioner)
   results.json  the same figures;  balance.png  both shares against K
 """
 import argparse
@@ -161,11 +162,12 @@ def main():
                     f"{s['1 process, 2 threads']:.2f} | {r['speedup_2_threads']:.2f} | "
                     f"{' / '.join(str(x['candidates']) for x in r['ranks'])} | {'yes' if r['identical'] else 'NO'} |\n")
         f.write("\n## The partitioner alone, simulated (largest share x K / critical share x K)\n\n")
-        f.write("| pair | d (rel.) | feature pairs | candidates | waves | " + " | ".join(f"K={k}" for k in KS) + " |\n")
-        f.write("|---|---|---|---|---|" + "---|" * len(KS) + "\n")
+        f.write("| pair | d (rel.) | feature pairs | pieces | candidates | waves | " + " | ".join(f"K={k}" for k in KS) + " |\n")
+        f.write("|---|---|---|---|---|---|" + "---|" * len(KS) + "\n")
         for r in bal:
             s0 = r["simulation"][0]
-            f.write(f"| {r['pair']} | {r['d_relative']} | {s0['feature_pairs']} | {s0['candidates']} | {s0['waves']} | "
+            f.write(f"| {r['pair']} | {r['d_relative']} | {s0['feature_pairs']} | {s0['pieces']} | {s0['candidates']} | "
+                    f"{s0['waves']} | "
                     + " | ".join(f"{s['largest_share'] * s['k']:.2f} / {s['critical_share'] * s['k']:.1f}" for s in r["simulation"])
                     + " |\n")
         f.write("\n![balance](balance.png)\n")
