@@ -39,8 +39,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 RESULTS = os.path.join(HERE, "results")
 DATA = os.path.join(ROOT, "data")
-NODE = os.path.join(HERE, "speed", "node")
-MANIFOLD_VERSION = "3.5.4"
 
 # name, P, Q (preset or data:FILE), extra args (scale of Q)
 PAIRS = {
@@ -58,7 +56,11 @@ PAIRS = {
     "armadillo+sphere": ("cgal:armadillo.off", "cgal:sphere.off", ["--scale-q", "8"]),
 }
 sys.path.insert(0, os.path.join(HERE, "validation"))
+sys.path.insert(0, os.path.join(HERE, "speed"))
 from run_suite import SUITE  # noqa: E402  (the validation suite's pairs, one definition)
+import manifold as manifold_minkowski  # noqa: E402  (Manifold's minkowskiSum, installed with npm)
+
+MANIFOLD_VERSION = manifold_minkowski.VERSION
 
 for _name, _p, _q, _d, _extra, _slow in SUITE:
     PAIRS.setdefault(_name, (_p, _q, _extra))
@@ -339,23 +341,9 @@ def bench_threads(run):
 
 def manifold(run, pair, timeout=600):
     """Manifold's minkowskiSum on the pair: {"seconds", "surface_area", ...}, or None."""
-    if not os.path.exists(os.path.join(NODE, "node_modules", "manifold-3d")):
-        os.makedirs(NODE, exist_ok=True)
-        subprocess.run(["npm", "install", "--prefix", NODE, "--no-audit", "--no-fund", f"manifold-3d@{MANIFOLD_VERSION}"],
-                       check=True, capture_output=True)
-    script = os.path.join(NODE, "manifold_minkowski.mjs")
-    with open(os.path.join(HERE, "speed", "manifold_minkowski.mjs")) as src, open(script, "w") as dst:
-        dst.write(src.read())
     ps, qs, args = PAIRS[pair]
-    if "--negate-p" in args:
-        return None  # the script sums P, not -P
     scale = args[args.index("--scale-q") + 1] if "--scale-q" in args else "1"
-    try:
-        out = subprocess.run(["node", script, run.path(ps), run.path(qs), scale], capture_output=True, text=True,
-                             timeout=timeout, check=True)
-        return json.loads(out.stdout)
-    except (subprocess.SubprocessError, ValueError):
-        return None
+    return manifold_minkowski.minkowski_sum(run.path(ps), run.path(qs), scale, "--negate-p" in args, timeout)
 
 
 def manifold_seconds(run, pair):

@@ -9,11 +9,12 @@ benchmark/mesh/results/:
   results.md   per pair: mesh vertices and triangles, the checks (closed, manifold, free of
                self-intersections, bounding a volume), shells against the exact boundary's,
                the Hausdorff distance both ways to the exact Nef boundary / d, the seconds of
-               the whole mesh (sum + reconstruction + checks) and of Nef, and their ratio
+               the whole mesh (sum + reconstruction + checks), of Nef and of Manifold's
+               minkowskiSum, and their ratios
   NAME.json    pmsum's report;  NAME.png  a picture of the mesh beside Nef's boundary
 The exact boundaries are cached in benchmark/mesh/results/cache/ (not committed) so that a
 rerun does not recompute Nef; the Nef seconds are those of the run that computed it.
-Manifold's minkowskiSum is not a Debian 12 package: its column says so.
+Manifold's minkowskiSum: npm manifold-3d (benchmark/speed/manifold.py, installed on first use).
 Needs Debian's python3-matplotlib.
 """
 import argparse
@@ -28,7 +29,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 RESULTS = os.path.join(HERE, "results")
 sys.path.insert(0, os.path.join(ROOT, "benchmark", "validation"))
+sys.path.insert(0, os.path.join(ROOT, "benchmark", "speed"))
 from run_suite import OPEN, SUITE, shape_path  # noqa: E402
+import manifold as manifold_minkowski  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -70,11 +73,26 @@ def picture(mesh_off, exact_off, png, title):
     plt.close(fig)
 
 
+MANIFOLD_TIMEOUT = 300
+
+
+def manifold_seconds(p, q, extra):
+    """Seconds of Manifold's minkowskiSum on the pair; -1 if it ran past MANIFOLD_TIMEOUT;
+    None where it failed."""
+    scale = extra[extra.index("--scale-q") + 1] if "--scale-q" in extra else "1"
+    m = manifold_minkowski.minkowski_sum(p, q, scale, "--negate-p" in extra, MANIFOLD_TIMEOUT)
+    if m and m.get("status") == "timeout":
+        return -1
+    return m["seconds"] if m and m.get("status") == "NoError" else None
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--only", nargs="*", help="run only these pairs (the others keep their saved rows)")
     ap.add_argument("--skip-slow", action="store_true", help="skip the pairs whose Nef sum takes minutes")
+    ap.add_argument("--manifold-only", action="store_true",
+                    help="only measure Manifold's minkowskiSum for the saved rows (their pmsum and Nef figures kept)")
     ap.add_argument("--pictures", nargs="*", default=["easy-void", "knot1+tetrahedron", "cross+star", "hooks"])
     args = ap.parse_args()
     pmsum = os.path.join(args.build, "pmsum")
@@ -91,6 +109,13 @@ def main():
                 rows.append((name, json.load(open(js))))
             continue
         p, q = shape_path(ps, pmsum, work), shape_path(qs, pmsum, work)
+        if args.manifold_only and p is not None and q is not None and os.path.exists(js):
+            print("Manifold:", name, flush=True)
+            report = json.load(open(js))
+            report["seconds"]["manifold"] = manifold_seconds(p, q, extra)
+            json.dump(report, open(js, "w"), indent=1)
+            rows.append((name, report))
+            continue
         if p is None or q is None:
             rows.append((name, "skipped (CGAL demo data not installed: apt-get install libcgal-demo)"))
             continue
@@ -112,6 +137,7 @@ def main():
         else:
             open(nef_seconds, "w").write(repr(report["seconds"]["nef"]))
         report["wall_seconds"] = time.time() - t
+        report["seconds"]["manifold"] = manifold_seconds(p, q, extra)
         json.dump(report, open(js, "w"), indent=1)
         rows.append((name, report))
         if name in args.pictures and report["mesh"]["made"]:
@@ -125,21 +151,29 @@ def main():
                   "a volume. Shells: the mesh's (voids) / the exact boundary's. Distances: Hausdorff, both ways, "
                   "between the mesh and the exact Nef boundary, measured at lattice samples of spacing d/8 on both, "
                   "divided by d. Mesh s: the whole mesh (sum, reconstruction, checks), as `pmsum mesh` runs it. "
-                  "Nef s: `CGAL::minkowski_sum_3`, one thread. Manifold's `minkowskiSum`: not measured (Manifold is "
-                  "not a Debian 12 package).\n\n")
+                  "Nef s: `CGAL::minkowski_sum_3`, one thread. Manifold s: Manifold "
+                  f"{manifold_minkowski.VERSION}'s `minkowskiSum` (npm manifold-3d, WebAssembly in node, one "
+                  f"thread, float32 input), the sum alone (no reading, no checks); > {MANIFOLD_TIMEOUT}: stopped then; – where "
+                  "it failed.\n\n")
         out.write("| pair | d | d used | vertices | triangles | checks | shells (voids) mesh / exact | "
-                  "mesh→exact / d | exact→mesh / d | sum s | reconstruction s | mesh s | Nef s | Nef / mesh | ok |\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+                  "mesh→exact / d | exact→mesh / d | sum s | reconstruction s | mesh s | Nef s | Nef / mesh | "
+                  "Manifold s | Manifold / mesh | ok |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for name, rep in rows:
             if isinstance(rep, str):
-                out.write(f"| {name} | | | | | {rep} | | | | | | | | | |\n")
+                out.write(f"| {name} | | | | | {rep} | | | | | | | | | | | |\n")
                 continue
             m, s = rep["mesh"], rep["seconds"]
             nef = s["nef"]
+            man = s.get("manifold")
+            if man == -1:
+                man_cols = f"> {MANIFOLD_TIMEOUT} | > {MANIFOLD_TIMEOUT / s['mesh']:.3g}"
+            else:
+                man_cols = f"{man:.2f} | {man / s['mesh'] if s['mesh'] > 0 else 0:.3g}" if man else "– | –"
             if not m["made"]:
                 out.write(f"| {name} | {rep['d_argument']} | | | | no valid mesh: {m['error']} | – / "
                           f"{rep['shells']} ({rep['void_shells']}) | | | {s['mesh_sum']:.2f} | "
-                          f"{s['mesh_reconstruction']:.2f} | {s['mesh']:.2f} | {nef:.2f} | | no |\n")
+                          f"{s['mesh_reconstruction']:.2f} | {s['mesh']:.2f} | {nef:.2f} | | {man_cols} | no |\n")
                 continue
             checks = "valid" if m["closed"] and m["manifold"] and m["self_intersection_free"] and m["bounds_a_volume"] \
                 else "INVALID"
@@ -148,7 +182,7 @@ def main():
                       f"{rep['shells']} ({rep['void_shells']}) | {m['mesh_to_exact_over_d']:.2f} | "
                       f"{m['exact_to_mesh_over_d']:.2f} | {s['mesh_sum']:.2f} | {s['mesh_reconstruction']:.2f} | "
                       f"{s['mesh']:.2f} | {nef:.2f} | {nef / s['mesh'] if s['mesh'] > 0 else 0:.3g} | "
-                      f"{'yes' if m['ok'] else 'no'} |\n")
+                      f"{man_cols} | {'yes' if m['ok'] else 'no'} |\n")
         out.write("\nPictures: `NAME.png` (the mesh beside Nef's boundary).\n")
     print("wrote", os.path.join(RESULTS, "results.md"))
     return 0
