@@ -520,6 +520,37 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   CHECK(std::abs(CGAL::Polygon_mesh_processing::volume(m) - 1.5 * 1.25 * 1.5) < 0.05);
 }
 
+TEST_CASE("mesh of a sum: the same mesh with one thread or two, run after run", "[applications][mesh]")
+{
+  // The reconstruction meets many equal priorities (cospherical lattice points on flat faces,
+  // its own constants for the triangles it puts off); they must not be broken by the order of
+  // heap addresses, which a parallel stage leaves different in every run.
+  const Mesh P = to_mesh<Mesh>(l_shape()), Q = to_mesh<Mesh>(tetrahedron(0.3));
+  const double d = 0.06;
+  auto triangles = [](const Mesh& m) { // each from its least vertex (orientation kept), sorted
+    std::vector<std::array<std::array<double, 3>, 3>> all;
+    for (auto f : m.faces()) {
+      std::array<std::array<double, 3>, 3> t;
+      int k = 0;
+      for (auto v : vertices_around_face(m.halfedge(f), m))
+        t[std::size_t(k++)] = {m.point(v).x(), m.point(v).y(), m.point(v).z()};
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      all.push_back(t);
+    }
+    std::sort(all.begin(), all.end());
+    return all;
+  };
+  Mesh sequential;
+  CGAL::point_minkowski_sum_mesh(P, Q, d, sequential);
+  REQUIRE(CGAL::Pmsum::check_mesh(sequential).valid());
+  const auto expected = triangles(sequential);
+  for (int run = 0; run < 3; ++run) {
+    Mesh parallel;
+    CGAL::point_minkowski_sum_mesh<CGAL::Parallel_tag>(P, Q, d, parallel);
+    CHECK(triangles(parallel) == expected);
+  }
+}
+
 #include <CGAL_pmsum/measure_mesh_distance.h>
 
 TEST_CASE("measure_mesh_distance: closed-form distances both ways", "[applications][mesh]")

@@ -60,8 +60,8 @@ inline std::size_t outer_shells(const Mesh_checks& c) { return c.shells - c.void
 inline std::size_t most_outer_shells(const Mesh_data& mp, const Mesh_data& mq)
 { return mp.components.size() * mq.components.size(); }
 
-/// Why the mesh of the last level was refused, for Mesh_reconstruction_failed.
-inline std::string last_failure(const Mesh_statistics& ms, std::size_t most_outer)
+/// Why the mesh of a level was refused, for Mesh_reconstruction_failed.
+inline std::string level_failure(const Mesh_statistics& ms, std::size_t most_outer)
 {
   if (ms.checks.valid() && ms.checks.shells == 0) return "was empty";
   if (!ms.checks.valid()) return "was " + ms.checks.failures();
@@ -96,7 +96,7 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// outer shells against most_outer_shells(), the points' distance to the mesh); if a check
 /// fails, d is halved, twice at most, reusing the coarser decisions; then
-/// Mesh_reconstruction_failed.
+/// Mesh_reconstruction_failed, which says why each level was refused.
 /// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
 /// stage began. GT: the kernel in which the points are computed.
 template <class GT, class ConcurrencyTag, class TriangleMesh>
@@ -107,6 +107,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   const int max_refinements = 2;
+  std::string failures;
   for (int level = 0; level <= max_refinements; ++level) {
     const double dl = d / double(1 << level);
     const auto t_sum = Clock::now();
@@ -135,11 +136,12 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       ms.triangles = faces(mesh).size();
       return;
     }
+    failures += std::string(level == 0 ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) + " " +
+                level_failure(ms, most_outer_shells(mp, mq));
     clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
   }
-  throw Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made (tried d = " + std::to_string(d) +
-                                   " down to " + std::to_string(ms.covering_distance) + "): the last reconstruction " +
-                                   last_failure(ms, most_outer_shells(mp, mq)) + ", so none is returned");
+  throw Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made: " + failures +
+                                   "; so none is returned");
 }
 
 } // namespace internal

@@ -39,7 +39,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <set>
+#include <thread>
 #include <utility>
 #include <limits>
 #include <optional>
@@ -87,6 +89,29 @@ struct Normal_consistent_priority
     return radius * (1 + std::ldexp(double(h >> 11), -93)); // (h >> 11) / 2^53 in [0, 1), times 2^-40
   }
 };
+
+/// Calls f() on a thread of its own and waits for it (what f throws is rethrown here).
+/// CGAL's advancing front orders its border by (priority, address of the border element), and
+/// many priorities are equal (its constants for the triangles it puts off), so the mesh depends
+/// on the order of the addresses malloc returns, that is on what the heap holds. After a
+/// parallel stage the main thread's heap holds blocks freed by other threads in an order that
+/// varies from run to run: the hooks' mesh was valid in three runs out of five. A new thread
+/// allocates from an arena of its own (glibc gives each new thread a fresh arena while there
+/// are fewer than 8 per core, or the one a thread of this function left), which only
+/// the reconstruction has used: the same mesh in every run, whatever the number of threads.
+template <class F>
+void on_own_thread(const F& f)
+{
+  std::exception_ptr failure;
+  std::thread([&] {
+    try {
+      f();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }).join();
+  if (failure) std::rethrow_exception(failure);
+}
 
 /// Closes the holes the reconstruction leaves (at sharp corners and along the rims of thin
 /// parts) with triangles between the points of each hole's border (CGAL's triangulate_hole:
@@ -187,8 +212,10 @@ Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
   for (const Point& p : points)
     positions.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   std::vector<std::array<std::size_t, 3>> triangles;
-  CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
-                                               Normal_consistent_priority{&normals});
+  on_own_thread([&] {
+    CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
+                                                 Normal_consistent_priority{&normals});
+  });
   std::vector<std::vector<std::size_t>> polygons;
   polygons.reserve(triangles.size());
   for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
