@@ -96,9 +96,11 @@ struct Normal_consistent_priority
 /// on the order of the addresses malloc returns, that is on what the heap holds. After a
 /// parallel stage the main thread's heap holds blocks freed by other threads in an order that
 /// varies from run to run: the hooks' mesh was valid in three runs out of five. A new thread
-/// allocates from an arena of its own (glibc gives each new thread a fresh arena while there
-/// are fewer than 8 per core, or the one a thread of this function left), which only
-/// the reconstruction has used: the same mesh in every run, whatever the number of threads.
+/// allocates from an arena of its own: glibc gives it the arena of a thread that has exited
+/// (in this package, only this function's threads exit), else a fresh one while there are
+/// fewer than 8 per core. Only the reconstruction has used it: the same mesh in every run,
+/// whatever the number of threads. (A user's program whose own threads exit before may hand
+/// it an arena in any state; the mesh is checked all the same.)
 template <class F>
 void on_own_thread(const F& f)
 {
