@@ -443,7 +443,6 @@ PLAN_PROBLEMS = ["pocket", "slot", "slot-narrow"]
 def bench_plan(run, seeds=20, time_limit=10.0):
     """Translational motion planning: ours (deterministic: 3 timed runs) against OMPL's
     RRTConnect and PRM (20 seeds, 10 s each), all with the same exact collision checks."""
-    import statistics
     exe = ensure_ompl_benchmark(run)
     runs = []
     for problem in PLAN_PROBLEMS:
