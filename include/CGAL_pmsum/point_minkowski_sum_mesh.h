@@ -107,6 +107,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   const int max_refinements = 2;
+  const std::size_t most_outer = most_outer_shells(mp, mq);
   std::string failures;
   for (int level = 0; level <= max_refinements; ++level) {
     const double dl = d / double(1 << level);
@@ -130,14 +131,14 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     ms.seconds_mesh += seconds_since(t_mesh);
     ms.covering_distance = dl;
     ms.refinements = level;
-    if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer_shells(mp, mq) &&
+    if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer &&
         ms.point_distance < dl) {
       ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
       ms.triangles = faces(mesh).size();
       return;
     }
     failures += std::string(level == 0 ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) + " " +
-                level_failure(ms, most_outer_shells(mp, mq));
+                level_failure(ms, most_outer);
     clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
   }
   throw Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made: " + failures +
