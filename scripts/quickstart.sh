@@ -48,14 +48,15 @@ case "$mode" in
       -o knot1_tetrahedron.ply --json knot1_tetrahedron.json
     ;;
   test)
-    ctest --test-dir build --output-on-failure -j "$jobs"
+    ctest --test-dir build --output-on-failure -j "$jobs" --timeout 1200
     phase "Release tests"
-    # AddressSanitizer + UBSan (-O1, no -g): every test but the Nef validation, the corpus,
-    # and a 60 s run of the readers' fuzzer; a sanitizer report fails the test.
+    # AddressSanitizer + UBSan (-O1, no -g): the pipeline, filters and input checks (Catch2 cases
+    # but [long]), the tool's test, the corpus and a 60 s run of the readers' fuzzer; a sanitizer
+    # report fails the test.
     cmake -S . -B build-san -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DPMSUM_SANITIZE=ON > /dev/null
     cmake --build build-san -j "$jobs"
     phase "sanitizer build"
-    ctest --test-dir build-san --output-on-failure -j "$jobs"
+    ctest --test-dir build-san --output-on-failure -j "$jobs" --timeout 1200
     phase "sanitized tests and fuzzer"
     ;;
   *)

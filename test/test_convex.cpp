@@ -154,7 +154,7 @@ TEST_CASE("statistics add up", "[convex][statistics]")
   CHECK(r.stats.feature_pairs > 0);
 }
 
-TEST_CASE("Parallel_tag gives the same points in the same order", "[parallel]")
+TEST_CASE("Parallel_tag gives the same points in the same order", "[parallel][long]")
 {
 #ifdef CGAL_LINKED_WITH_TBB
   const Mesh mp = to_mesh<Mesh>(l_shape()), mq = to_mesh<Mesh>(random_convex(12, 5));

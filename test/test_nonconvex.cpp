@@ -48,7 +48,7 @@ TEST_CASE("L-shape + cube, records report the reflex crease exactly", "[nonconve
   CHECK(on_crease >= 10);
 }
 
-TEST_CASE("paper's blocks (non-manifold) + cube of the square's size", "[nonconvex][blocks]")
+TEST_CASE("paper's blocks (non-manifold) + cube of the square's size", "[nonconvex][blocks][long]")
 {
   // 3x3 checkerboard: the sum is the full box [0,4]x[0,4]x[0,1.5]. Where four block sums
   // meet along a vertical line, (-P + x) touches the cube on all four sides and the
@@ -58,7 +58,7 @@ TEST_CASE("paper's blocks (non-manifold) + cube of the square's size", "[nonconv
   CHECK(count_in(r.points, {0.01, 0.01, 0.01}, {3.99, 3.99, 1.49}) == 0);
 }
 
-TEST_CASE("paper's blocks + 0.95 cube: the narrow columns appear", "[nonconvex][blocks]")
+TEST_CASE("paper's blocks + 0.95 cube: the narrow columns appear", "[nonconvex][blocks][long]")
 {
   const Soup B = blocks(3, 0.5), C = box({0, 0, 0}, {0.95, 0.95, 0.95});
   const Result r = check(B, C, 0.125);
@@ -67,7 +67,7 @@ TEST_CASE("paper's blocks + 0.95 cube: the narrow columns appear", "[nonconvex][
   CHECK(count_in(r.points, {1.9, 0.9, 0.1}, {2.05, 1.05, 1.35}) > 0);
 }
 
-TEST_CASE("open cube + ellipsoid: a surface plus a solid (paper Fig. 7)", "[nonconvex][open]")
+TEST_CASE("open cube + ellipsoid: a surface plus a solid (paper Fig. 7)", "[nonconvex][open][long]")
 {
   const Soup S = open_box({0, 0, 0}, {1, 1, 1}), E = ellipsoid(0.2, 0.15, 0.1);
   const Result r = check(S, E, 0.05);
@@ -477,7 +477,7 @@ std::vector<std::vector<IK::Point_3>> levels(const Soup& P, const Soup& Q, const
 
 } // namespace
 
-TEST_CASE("ranks: k ranks give one process's output and counts", "[ranks]")
+TEST_CASE("ranks: k ranks give one process's output and counts", "[ranks][long]")
 {
   // 1.5% and 7% of the sums' diagonals; both have trim points (the tunnel's passage).
   const std::vector<std::tuple<const char*, const char*, double>> pairs = {{"knot", "tetrahedron", 0.15},
