@@ -381,13 +381,15 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
 #include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
 #include "shape_presets.h"
 
+#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
 
 namespace {
 
-/// K threads of one process as K ranks: all_gather waits for the K messages.
+/// K threads of one process as K ranks: all_gather waits for the K messages; the counter is
+/// an atomic.
 class Thread_ranks
 {
 public:
@@ -414,9 +416,23 @@ public:
       }
       return all->m_result;
     }
+    std::unique_ptr<Counter> make_counter() override
+    {
+      all_gather({});
+      if (r == 0) all->m_counter = 0;
+      all_gather({});
+      return std::make_unique<Shared>(&all->m_counter);
+    }
+    struct Shared : Counter
+    {
+      std::atomic<std::uint64_t>* value;
+      explicit Shared(std::atomic<std::uint64_t>* v) : value(v) {}
+      std::uint64_t fetch_add(std::uint64_t n) override { return value->fetch_add(n); }
+    };
   };
 
 private:
+  std::atomic<std::uint64_t> m_counter{0};
   std::vector<std::string> m_slots, m_result;
   std::size_t m_arrived = 0, m_round = 0;
   std::mutex m_mutex;

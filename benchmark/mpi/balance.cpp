@@ -4,8 +4,10 @@
 // The partitioner of `mpirun -np K pmsum sum` alone, simulated for many K (benchmark/mpi/run_mpi.py):
 //   mpi_balance P Q d_relative [scale_q] K1 K2 ...
 // For each K, the engine's own waves (internal::wave_end, internal::wave_work) of pieces of
-// feature pairs (internal::make_pieces) are shared among K ranks by internal::wave_owners,
-// with each piece's candidates as its work, as the engine does. Prints one JSON line per K:
+// feature pairs (internal::make_pieces) are taken by K ranks as the engine's ranks take them
+// from their shared counter: in order, each by the rank that is free first (of ranks free at
+// once, the one with the least work so far), with each piece's candidates as its time (the real times vary more: the trim search). Prints one JSON line
+// per K:
 //   largest_share   the largest rank's share of the whole work (the memory and the total work)
 //   critical_share  the sum over the waves of the wave's largest rank load, over the whole
 //                   work: the ranks wait for each other after every wave, so the time is at
@@ -24,6 +26,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -72,9 +75,16 @@ int main(int argc, char** argv)
     double critical = 0;
     for (std::size_t first = 0; first < work.size();) {
       const std::size_t last = in::wave_end(work, first, in::wave_work(total));
-      const std::vector<int> owner = in::wave_owners(work, first, last, so_far);
-      std::vector<std::size_t> load(std::size_t(k), 0);
-      for (std::size_t i = first; i < last; ++i) load[std::size_t(owner[i - first])] += work[i];
+      std::vector<std::size_t> load(std::size_t(k), 0); // in this wave
+      for (std::size_t i = first; i < last; ++i) {
+        // The rank free first; of ranks free at once (at the wave's start), any may win the
+        // counter: modelled as the one with the least work so far.
+        std::size_t r = 0;
+        for (std::size_t s = 1; s < load.size(); ++s)
+          if (load[s] < load[r] || (load[s] == load[r] && so_far[s] < so_far[r])) r = s;
+        load[r] += work[i];
+        so_far[r] += work[i];
+      }
       critical += double(*std::max_element(load.begin(), load.end()));
       first = last;
     }

@@ -15,7 +15,9 @@ Open MPI's mpirun, and Debian's python3-matplotlib. Writes into benchmark/mpi/re
                   perfect balance), and the critical share x K (the ranks wait for each other after
                   every wave of pieces of feature pairs, so the decision stage takes at least that
                   share of one process's time: the speed-up of the decisions is at most
-                  1 / critical share; candidates stand for the work, as in the partitioner)
+                  1 / critical share; each piece taken in order by the rank that is free first,
+                  as the ranks take them from their shared counter, with its candidates as its
+                  time)
   results.json  the same figures;  balance.png  both shares against K
 """
 import argparse

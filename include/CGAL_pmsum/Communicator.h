@@ -2,12 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The communicator interface of a sum computed by several processes (named parameter
-// `communicator`): one collective operation, all-gather of bytes. The package holds no MPI
+// `communicator`): all-gather of bytes, and a counter shared by the ranks. The package holds no MPI
 // symbol; CGAL_pmsum/MPI_communicator.h implements it over an MPI_Comm.
 
 #ifndef CGAL_PMSUM_COMMUNICATOR_H
 #define CGAL_PMSUM_COMMUNICATOR_H
 
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,8 +20,8 @@ namespace Pmsum {
 /// The processes (ranks) that compute one sum together, given to an entry point with the
 /// named parameter `communicator(&c)`. Every rank calls the entry point with the same
 /// meshes, `d` and parameters (a fingerprint of the candidates is compared: different inputs
-/// throw `Invalid_input` on every rank); each rank decides its share of the feature pairs, and
-/// every rank returns the whole output, the same as one process's, point for point. A failure
+/// throw `Invalid_input` on every rank); the ranks take the pieces of feature pairs to decide
+/// from a shared counter (make_counter()), and every rank returns the whole output, the same as one process's, point for point. A failure
 /// during the decisions on one rank ends every rank (the others throw `Rank_failed`); one
 /// before them (e.g. out of memory while reading) is not shared: end every rank then.
 /// Implement it over your transport (CGAL::Pmsum::MPI_communicator for MPI).
@@ -37,6 +39,22 @@ public:
   /// \param bytes this rank's message (any size, possibly empty)
   /// \returns the messages of ranks 0, 1, ..., size() - 1
   virtual std::vector<std::string> all_gather(const std::string& bytes) = 0;
+
+  /// A counter shared by the ranks (make_counter()): the ranks take the pieces of each wave
+  /// from it, so that a rank that finishes early takes more.
+  class Counter
+  {
+  public:
+    /// Collective (every rank destroys its counter, in the same order as it made them).
+    virtual ~Counter() = default;
+    /// Adds `n` to the counter, atomically with respect to every rank.
+    /// \param n the increment
+    /// \returns the counter's value before the addition
+    virtual std::uint64_t fetch_add(std::uint64_t n) = 0;
+  };
+  /// Collective: a new counter, at 0 on every rank when this returns.
+  /// \returns this rank's handle to the counter
+  virtual std::unique_ptr<Counter> make_counter() = 0;
 };
 
 } // namespace Pmsum

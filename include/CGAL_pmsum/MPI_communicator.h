@@ -12,6 +12,8 @@
 #include <mpi.h>
 
 #include <climits>
+#include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -67,7 +69,47 @@ public:
     return out;
   }
 
+  /// An MPI window of one 64-bit integer on rank 0, updated with MPI_Fetch_and_op (passive
+  /// target: rank 0 need not take part). Collective, as is its destruction.
+  /// \returns this rank's handle to the counter
+  std::unique_ptr<Counter> make_counter() override { return std::make_unique<Window_counter>(m_comm); }
+
 private:
+  class Window_counter : public Counter
+  {
+  public:
+    explicit Window_counter(MPI_Comm comm)
+    {
+      int rank = 0;
+      MPI_Comm_rank(comm, &rank);
+      std::uint64_t* value = nullptr;
+      MPI_Win_allocate(MPI_Aint(rank == 0 ? sizeof(std::uint64_t) : 0), int(sizeof(std::uint64_t)), MPI_INFO_NULL, comm,
+                       &value, &m_window);
+      if (rank == 0) {
+        MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, m_window);
+        *value = 0;
+        MPI_Win_unlock(0, m_window);
+      }
+      MPI_Barrier(comm);
+      MPI_Win_lock_all(0, m_window);
+    }
+    ~Window_counter() override
+    {
+      MPI_Win_unlock_all(m_window);
+      MPI_Win_free(&m_window);
+    }
+    std::uint64_t fetch_add(std::uint64_t n) override
+    {
+      std::uint64_t before = 0;
+      MPI_Fetch_and_op(&n, &before, MPI_UINT64_T, 0, 0, MPI_SUM, m_window);
+      MPI_Win_flush(0, m_window);
+      return before;
+    }
+
+  private:
+    MPI_Win m_window;
+  };
+
   MPI_Comm m_comm;
   int m_rank = 0, m_size = 1;
 };

@@ -165,7 +165,7 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   mesh_statistics(S& s) const { return {&s, *this}; }
 
   /// Compute the sum together with the other ranks of `c` (default `nullptr`: this process
-  /// alone). Every rank calls the same function with the same input; each decides its share
+  /// alone). Every rank calls the same function with the same input; the ranks share the decisions
   /// of the candidates, and every rank gets the whole output, identical to one process's
   /// (see CGAL::Pmsum::Communicator, and CGAL::Pmsum::MPI_communicator for MPI).
   /// \param c the ranks, or `nullptr`

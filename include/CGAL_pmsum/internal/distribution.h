@@ -3,9 +3,10 @@
 //
 // Stage 3 across processes (named parameter `communicator`). The decisions run in waves of
 // pieces of feature pairs (parallel.h, candidates.h), and the waves do not depend on the
-// number of processes: each rank decides its share of a wave's pieces (largest first, to the
-// least loaded rank), the ranks exchange their decisions, and every rank commits the whole
-// wave in canonical order.
+// number of processes: the ranks take a wave's pieces one by one from a counter they share
+// (Communicator::make_counter), so that a rank whose pieces were quick takes more (the work
+// of a piece, its trim search above all, is not known in advance), the ranks exchange their
+// decisions, and every rank commits the whole wave in canonical order.
 // Every rank thus holds the same net and output as one process, point for point, and the
 // counters summed over the ranks are one process's.
 //
@@ -26,12 +27,11 @@
 
 #include <CGAL/Exact_rational.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <exception>
-#include <numeric>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -122,38 +122,6 @@ private:
   std::size_t m_at = 0;
 };
 
-/// The rank of each index of [first, last): largest work first (ties in a fixed scrambled
-/// order: the costly pieces among equal ones, e.g. those of a pair whose trim search is
-/// long, are often the first, and would all go to the lower ranks), each to the rank least
-/// loaded in this wave, ties to the rank with the least work so far (`so_far`, updated), then
-/// the lower rank. The ranks wait for each other after every wave, so the wave's largest
-/// load is what counts; the totals are balanced too. The same on every rank.
-inline std::vector<int> wave_owners(const std::vector<std::size_t>& work, std::size_t first, std::size_t last,
-                                    std::vector<std::size_t>& so_far)
-{
-  auto scrambled = [](std::uint64_t x) { // splitmix64's finaliser
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-  };
-  std::vector<std::size_t> order(last - first);
-  std::iota(order.begin(), order.end(), first);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return work[a] != work[b] ? work[a] > work[b] : scrambled(a) < scrambled(b);
-  });
-  std::vector<std::size_t> load(so_far.size(), 0);
-  std::vector<int> owner(last - first, 0);
-  for (std::size_t i : order) {
-    std::size_t best = 0;
-    for (std::size_t r = 1; r < load.size(); ++r)
-      if (load[r] < load[best] || (load[r] == load[best] && so_far[r] < so_far[best])) best = r;
-    owner[i - first] = int(best);
-    load[best] += work[i];
-    so_far[best] += work[i];
-  }
-  return owner;
-}
-
 /// The message of an exception.
 inline std::string message_of(std::exception_ptr e)
 {
@@ -225,22 +193,27 @@ struct Rank_load
 class Wave_ranks
 {
 public:
-  explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_so_far(std::size_t(comm.size()), 0) {}
+  /// Collective (and so is the destruction: the shared counter's).
+  explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_counter(comm.make_counter()) {}
   const Rank_load& load() const { return m_load; }
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
 
-  /// This rank's indices of [first, last), in increasing order.
-  std::vector<std::size_t> share(const std::vector<std::size_t>& work, std::size_t first, std::size_t last)
+  /// Up to n more indices of the wave that ends at `last` for this rank, from the shared
+  /// counter; none when the wave has no more. The counter hands out 0, 1, 2, ... in turn, and a rank
+  /// stops at the first index beyond the wave, which it keeps for its own wave: every index
+  /// is taken by one rank, in its wave.
+  std::vector<std::size_t> take(const std::vector<std::size_t>& work, std::size_t last, std::size_t n)
   {
-    const std::vector<int> owner = wave_owners(work, first, last, m_so_far);
-    std::vector<std::size_t> mine;
-    for (std::size_t i = first; i < last; ++i)
-      if (owner[i - first] == m_comm.rank()) {
-        mine.push_back(i);
-        ++m_load.pieces;
-        m_load.candidates += work[i];
-      }
-    return mine;
+    std::vector<std::size_t> taken;
+    while (taken.size() < n) {
+      if (!m_next) m_next = std::size_t(m_counter->fetch_add(1));
+      if (*m_next >= last) break;
+      taken.push_back(*m_next);
+      ++m_load.pieces;
+      m_load.candidates += work[*m_next];
+      m_next.reset();
+    }
+    return taken;
   }
 
   /// Collective: sends the buffers of `mine` (indices of the wave [first, last)), receives
@@ -281,7 +254,8 @@ public:
 
 private:
   Communicator& m_comm;
-  std::vector<std::size_t> m_so_far; // every rank's work so far
+  std::unique_ptr<Communicator::Counter> m_counter;
+  std::optional<std::size_t> m_next; // taken, beyond the last wave's end
   Rank_load m_load;
 };
 

@@ -17,6 +17,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <chrono>
@@ -87,6 +88,16 @@ private:
 #endif
 };
 
+/// The number of threads for_each_index may use in parallel.
+inline std::size_t number_of_threads()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::size_t(tbb::this_task_arena::max_concurrency());
+#else
+  return 1;
+#endif
+}
+
 /// The end of the wave of run_in_waves that starts at index `first`: the consecutive
 /// indices from `first` whose work reaches `wave_work`, at least one.
 inline std::size_t wave_end(const std::vector<std::size_t>& work, std::size_t first, std::size_t wave_work)
@@ -102,8 +113,8 @@ inline std::size_t wave_end(const std::vector<std::size_t>& work, std::size_t fi
 /// each wave, on the calling thread: commit(i, buffer) for each index of the wave in order,
 /// then progress(fraction of the work done), which cancels (throws Operation_cancelled) by
 /// returning false. The waves depend neither on the number of threads nor on the ranks.
-/// With `ranks` (distribution.h), this rank processes its share of each wave and receives
-/// the other ranks' buffers before the commits; a cancellation ends every rank at the next
+/// With `ranks` (distribution.h), this rank processes the indices of each wave it takes from
+/// the ranks' counter and receives the other ranks' buffers before the commits; a cancellation ends every rank at the next
 /// exchange (one more exchange follows the last wave).
 template <class Buffer, class Process, class Commit>
 void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, bool parallel, const Process& process,
@@ -113,6 +124,7 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
   for (std::size_t w : work) total += w;
   std::vector<Buffer> buffers;
   std::vector<std::size_t> mine;
+  const std::size_t batch = parallel ? number_of_threads() : 1;
   // With ranks, whatever fails (or cancels) on this rank travels with the next exchange.
   std::exception_ptr failure;
   bool cancelled = false;
@@ -120,15 +132,20 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
     const std::size_t last = wave_end(work, first, wave_work);
     if (buffers.size() < last - first) buffers.resize(last - first);
     for (std::size_t k = 0; k < last - first; ++k) buffers[k].clear();
-    if (ranks) mine = ranks->share(work, first, last);
-    else {
-      mine.resize(last - first);
-      std::iota(mine.begin(), mine.end(), first);
-    }
     const auto start = std::chrono::steady_clock::now();
+    mine.clear();
     try {
-      if (!failure && !cancelled)
+      if (!ranks) {
+        mine.resize(last - first);
+        std::iota(mine.begin(), mine.end(), first);
         for_each_index(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
+      } else if (!failure && !cancelled) {
+        // Taken from the ranks' counter as many at a time as there are threads.
+        for (std::vector<std::size_t> taken; !(taken = ranks->take(work, last, batch)).empty();) {
+          mine.insert(mine.end(), taken.begin(), taken.end());
+          for_each_index(taken.size(), parallel, [&](std::size_t k) { process(taken[k], buffers[taken[k] - first]); });
+        }
+      }
     } catch (...) {
       if (!ranks) throw;
       failure = std::current_exception();

@@ -11,7 +11,7 @@
 //                       (cd_filter.h), in waves of pieces of pairs (parallel.h); then the piece's
 //                       trim points: trim_points.h (which lattice segments), segment_search.h
 //                       (their free parts, exactly)
-//      distribution.h   with a communicator: each rank decides its share of each wave
+//      distribution.h   with a communicator: the ranks take the pieces of each wave as they come free
 //   4. covering_net.h   the output: the greedy (d/2, d)-net of the boundary candidates
 //   5. emit(p, q, direction, trim) for each output point (trim: null, or a trim-curve point), on the calling thread, in canonical order.
 
@@ -93,17 +93,19 @@ inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& 
   return all;
 }
 
-/// The work of a wave of decisions, for `total` candidates: about 1/500 of them, small
-/// enough that few candidates are tested in vain (covered by an earlier piece of their wave:
-/// hooks at d = 2%, 9,042 CD queries against 8,585 with 1/2000), large enough that a few
-/// costly pieces (long trim searches) do not leave the threads and ranks waiting (knot1 +
-/// tetrahedron/32 at d = 0.3%, 2 threads: 1.8 times faster than 1, against 1.5 with 1/2000).
-inline std::size_t wave_work(std::size_t total) { return (std::max<std::size_t>)(1, total / 500); }
+/// The work of a wave of decisions, for `total` candidates: about 1/125 of them, small
+/// enough that few candidates are tested in vain (covered by an earlier piece of their wave),
+/// large enough to hold 16 pieces or more, so that the threads and ranks, which take the
+/// pieces as they come free, seldom wait for a costly piece (a long trim search) at the end of
+/// a wave. Against 1/500 with 4 pieces (benchmark/mpi, 2 cores): two ranks 1.51-1.74 times
+/// faster than one process (were 1.36-1.50), one thread as fast, 0.5% more points on the
+/// hooks (7,772 against 7,735) and the same on knot1 and the elephant.
+inline std::size_t wave_work(std::size_t total) { return (std::max<std::size_t>)(1, total / 125); }
 
 /// The work of a piece of a pair (candidates.h, make_pieces), for `total` candidates: a
-/// fraction of a wave's, so that a wave holds several pieces to share among the threads and
+/// sixteenth of a wave's, so that a wave holds several pieces to share among the threads and
 /// the ranks, even where single pairs are larger than a wave.
-inline std::size_t piece_work(std::size_t total) { return (std::max<std::size_t>)(1, wave_work(total) / 4); }
+inline std::size_t piece_work(std::size_t total) { return (std::max<std::size_t>)(1, wave_work(total) / 16); }
 
 /// The fewest cell rows in a piece: a piece tests the corners of its last lattice row again
 /// (the next piece's candidates) when its trim search needs them.
