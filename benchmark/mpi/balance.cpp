@@ -6,8 +6,8 @@
 // For each K, the engine's own waves (internal::wave_end, internal::wave_work) of pieces of
 // feature pairs (internal::make_pieces) are taken by K ranks as the engine's ranks take them
 // from their shared counter: in order, each by the rank that is free first (of ranks free at
-// once, the one with the least work so far), with each piece's candidates as its time (the real times vary more: the trim search). Prints one JSON line
-// per K:
+// once, the one with the least work so far), with each piece's candidates as its time (the
+// real times vary more: the trim search). Prints one JSON line per K:
 //   largest_share   the largest rank's share of the whole work (the memory and the total work)
 //   critical_share  the sum over the waves of the wave's largest rank load, over the whole
 //                   work: the ranks wait for each other after every wave, so the time is at

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The communicator interface of a sum computed by several processes (named parameter
-// `communicator`): all-gather of bytes, and a counter shared by the ranks. The package holds no MPI
-// symbol; CGAL_pmsum/MPI_communicator.h implements it over an MPI_Comm.
+// `communicator`): all-gather of bytes, and a counter shared by the ranks. The package holds
+// no MPI symbol; CGAL_pmsum/MPI_communicator.h implements it over an MPI_Comm.
 
 #ifndef CGAL_PMSUM_COMMUNICATOR_H
 #define CGAL_PMSUM_COMMUNICATOR_H
@@ -21,8 +21,8 @@ namespace Pmsum {
 /// named parameter `communicator(&c)`. Every rank calls the entry point with the same
 /// meshes, `d` and parameters (a fingerprint of the candidates is compared: different inputs
 /// throw `Invalid_input` on every rank); the ranks take the pieces of feature pairs to decide
-/// from a shared counter (make_counter()), and every rank returns the whole output, the same as one process's, point for point. A failure
-/// during the decisions on one rank ends every rank (the others throw `Rank_failed`); one
+/// from a shared counter (make_counter()), and every rank returns the whole output, the same
+/// as one process's, point for point. A failure during the decisions on one rank ends every rank (the others throw `Rank_failed`); one
 /// before them (e.g. out of memory while reading) is not shared: end every rank then.
 /// Implement it over your transport (CGAL::Pmsum::MPI_communicator for MPI).
 class Communicator

@@ -199,9 +199,9 @@ public:
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
 
   /// Up to n more indices of the wave that ends at `last` for this rank, from the shared
-  /// counter; none when the wave has no more. The counter hands out 0, 1, 2, ... in turn, and a rank
-  /// stops at the first index beyond the wave, which it keeps for its own wave: every index
-  /// is taken by one rank, in its wave.
+  /// counter; none when the wave has no more. The counter hands out 0, 1, 2, ... in turn, and
+  /// a rank stops at the first index beyond the wave, which it keeps for its own wave: every
+  /// index is taken by one rank, in its wave.
   std::vector<std::size_t> take(const std::vector<std::size_t>& work, std::size_t last, std::size_t n)
   {
     std::vector<std::size_t> taken;

@@ -114,8 +114,9 @@ inline std::size_t wave_end(const std::vector<std::size_t>& work, std::size_t fi
 /// then progress(fraction of the work done), which cancels (throws Operation_cancelled) by
 /// returning false. The waves depend neither on the number of threads nor on the ranks.
 /// With `ranks` (distribution.h), this rank processes the indices of each wave it takes from
-/// the ranks' counter and receives the other ranks' buffers before the commits; a cancellation ends every rank at the next
-/// exchange (one more exchange follows the last wave).
+/// the ranks' counter and receives the other ranks' buffers before the commits; a
+/// cancellation ends every rank at the next exchange (one more exchange follows the last
+/// wave).
 template <class Buffer, class Process, class Commit>
 void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, bool parallel, const Process& process,
                   const Commit& commit, const std::function<bool(double)>& progress, Wave_ranks* ranks = nullptr)

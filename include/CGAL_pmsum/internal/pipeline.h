@@ -11,7 +11,7 @@
 //                       (cd_filter.h), in waves of pieces of pairs (parallel.h); then the piece's
 //                       trim points: trim_points.h (which lattice segments), segment_search.h
 //                       (their free parts, exactly)
-//      distribution.h   with a communicator: the ranks take the pieces of each wave as they come free
+//      distribution.h   with a communicator: the ranks take each wave's pieces as they come free
 //   4. covering_net.h   the output: the greedy (d/2, d)-net of the boundary candidates
 //   5. emit(p, q, direction, trim) for each output point (trim: null, or a trim-curve point), on the calling thread, in canonical order.
 
