@@ -45,12 +45,17 @@ public:
   class Counter
   {
   public:
-    /// Collective (every rank destroys its counter, in the same order as it made them).
+    /// Not collective: a rank that leaves on an exception of its own destroys its counter
+    /// alone (and its program then ends every rank, e.g. with MPI_Abort).
     virtual ~Counter() = default;
     /// Adds `n` to the counter, atomically with respect to every rank.
     /// \param n the increment
     /// \returns the counter's value before the addition
     virtual std::uint64_t fetch_add(std::uint64_t n) = 0;
+    /// Collective: every rank is done with the counter, which may release what it holds
+    /// across the ranks (fetch_add() must not be called after it). A counter destroyed
+    /// without it keeps that until the transport ends (MPI_communicator: until MPI_Finalize).
+    virtual void close() {}
   };
   /// Collective: a new counter, at 0 on every rank when this returns.
   /// \returns this rank's handle to the counter

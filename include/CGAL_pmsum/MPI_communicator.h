@@ -70,7 +70,8 @@ public:
   }
 
   /// An MPI window of one 64-bit integer on rank 0, updated with MPI_Fetch_and_op (passive
-  /// target: rank 0 need not take part). Collective, as is its destruction.
+  /// target: rank 0 need not take part). Collective; its close() frees the window
+  /// (collective), its destruction alone does not (MPI_Win_free would wait for the others).
   /// \returns this rank's handle to the counter
   std::unique_ptr<Counter> make_counter() override { return std::make_unique<Window_counter>(m_comm); }
 
@@ -93,10 +94,11 @@ private:
       MPI_Barrier(comm);
       MPI_Win_lock_all(0, m_window);
     }
-    ~Window_counter() override
+    void close() override
     {
+      if (m_window == MPI_WIN_NULL) return;
       MPI_Win_unlock_all(m_window);
-      MPI_Win_free(&m_window);
+      MPI_Win_free(&m_window); // sets it to MPI_WIN_NULL
     }
     std::uint64_t fetch_add(std::uint64_t n) override
     {
@@ -107,7 +109,7 @@ private:
     }
 
   private:
-    MPI_Win m_window;
+    MPI_Win m_window = MPI_WIN_NULL;
   };
 
   MPI_Comm m_comm;

@@ -193,8 +193,10 @@ struct Rank_load
 class Wave_ranks
 {
 public:
-  /// Collective (and so is the destruction: the shared counter's).
+  /// Collective (the shared counter's making).
   explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_counter(comm.make_counter()) {}
+  /// Collective: no index is taken any more (Communicator::Counter::close).
+  void close() { m_counter->close(); }
   const Rank_load& load() const { return m_load; }
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
 

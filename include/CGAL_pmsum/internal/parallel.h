@@ -170,7 +170,10 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
     }
     first = last;
   }
-  if (ranks) ranks->exchange(buffers, 0, 0, {}, failure, cancelled);
+  if (ranks) {
+    ranks->close(); // every rank is here: a failure of one was carried, not thrown
+    ranks->exchange(buffers, 0, 0, {}, failure, cancelled);
+  }
 }
 
 } // namespace internal
