@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -39,8 +40,11 @@ public:
           double theta = 0;
           for (const V& c : {dir(u0, v0), dir(u0, v1), dir(u1, v0), dir(u1, v1)})
             theta = (std::max)(theta, std::acos((std::min)(1., dot3(a, c))));
+          theta = (std::min)(pi, theta + 1e-6); // margin for rounding
           m_axis.push_back(a);
-          m_theta.push_back((std::min)(pi, theta + 1e-6)); // margin for rounding
+          m_cos.push_back(std::cos(theta));
+          m_sin.push_back(std::sin(theta));
+          m_wide.push_back(theta >= pi / 2);
         }
   }
 
@@ -59,21 +63,24 @@ public:
     return (face * m_k + index(u)) * m_k + index(v);
   }
 
-  /// Is u . n > 0 for every direction n of the cell's cone, by a clear margin?
+  /// Is u . n > 0 for every direction n of the cell's cone, by a clear margin? That is, is
+  /// cos(alpha + theta) > 0, alpha being the angle of u to the cone's axis and theta < pi/2
+  /// the cone's half-angle (alpha + theta < 3 pi / 2, where the cosine is negative past pi/2);
+  /// by the sum formula, without inverse trigonometric functions.
   bool strictly_positive(int c, const V& u) const
   {
     const double len = std::sqrt(dot3(u, u));
-    if (len == 0) return false;
-    const double alpha = std::acos((std::max)(-1., (std::min)(1., dot3(u, m_axis[c]) / len)));
-    const double pi = std::acos(-1.);
-    return std::cos((std::min)(pi, alpha + m_theta[c])) > 1e-9;
+    if (len == 0 || m_wide[c]) return false;
+    const double cos_alpha = (std::max)(-1., (std::min)(1., dot3(u, m_axis[c]) / len));
+    const double sin_alpha = std::sqrt(1 - cos_alpha * cos_alpha);
+    return cos_alpha * m_cos[c] - sin_alpha * m_sin[c] > 1e-9;
   }
 
   /// Can the cell's cone meet the great circle orthogonal to e?
   bool meets_plane(int c, const V& e) const
   {
     const double len = std::sqrt(dot3(e, e));
-    return std::abs(dot3(m_axis[c], e)) / len <= std::sin((std::min)(std::acos(-1.) / 2, m_theta[c])) + 1e-9;
+    return m_wide[c] || std::abs(dot3(m_axis[c], e)) / len <= m_sin[c] + 1e-9;
   }
 
 private:
@@ -95,7 +102,8 @@ private:
 
   int m_k;
   std::vector<V> m_axis;
-  std::vector<double> m_theta;
+  std::vector<double> m_cos, m_sin; // of each cone's half-angle theta
+  std::vector<std::uint8_t> m_wide;  // theta >= pi/2
 };
 
 } // namespace internal
