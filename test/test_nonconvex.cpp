@@ -289,7 +289,7 @@ TEST_CASE("interior certificate: every certified box lies inside the exact sum",
     in::Mesh_descriptors<Mesh> dp, dq;
     const in::Mesh_data a = in::make_mesh_data(mp, get(CGAL::vertex_point, mp), false, false, "P", dp);
     const in::Mesh_data b = in::make_mesh_data(mq, get(CGAL::vertex_point, mq), false, false, "Q", dq);
-    const in::Interior_certificate certificate(a, b, 24, 1e-9 * 4, false);
+    const in::Interior_certificate certificate(a, b, 24, 1e-9 * 4, false, nullptr);
     const Reference ref(P, Q);
     REQUIRE(ref.pieces.size() == 1);
     const auto box_p = in::mesh_box(a), box_q = in::mesh_box(b);
@@ -381,6 +381,7 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
 #include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>
 #include "shape_presets.h"
 
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <mutex>
@@ -570,4 +571,53 @@ TEST_CASE("ranks: a cancellation on one rank ends every rank", "[ranks]")
 {
   const Soup P = pmsum_shapes::shape_preset("knot"), Q = pmsum_shapes::shape_preset("tetrahedron");
   CHECK_THROWS_WITH(run_on_ranks(P, Q, 0.15, 2, [](int rank, double) { return rank != 1; }), "cancelled");
+}
+
+TEST_CASE("ranks: chunks mapped over the ranks are one process's, and a failure in one ends every rank", "[ranks]")
+{
+  using CGAL::Pmsum::internal::map_chunks;
+  // Chunk k holds k values k * 100 + i: uneven sizes, empty chunk 0, more chunks than ranks and fewer.
+  auto chunk = [](std::size_t k, std::vector<std::uint32_t>& out) {
+    for (std::size_t i = 0; i < k; ++i) out.push_back(std::uint32_t(k * 100 + i));
+  };
+  for (std::size_t n : {std::size_t(0), std::size_t(2), std::size_t(7)}) {
+    const auto one = map_chunks<std::uint32_t>(n, false, nullptr, chunk);
+    REQUIRE(one.size() == n);
+    for (std::size_t k = 0; k < n; ++k) CHECK(one[k].size() == k);
+    for (int ranks : {1, 2, 3}) {
+      INFO(n << " chunks on " << ranks << " ranks");
+      std::array<std::atomic<int>, 3> calls{}; // chunks computed by each rank
+      const auto [many, errors] = on_ranks<std::vector<std::vector<std::uint32_t>>>(
+        ranks, [&](CGAL::Pmsum::Communicator& me, int r) {
+          return map_chunks<std::uint32_t>(n, true, &me, [&](std::size_t k, std::vector<std::uint32_t>& out) {
+            ++calls[std::size_t(r)];
+            chunk(k, out);
+          });
+        });
+      int total = 0;
+      for (int r = 0; r < ranks; ++r) {
+        CHECK(errors[std::size_t(r)].empty());
+        CHECK(many[std::size_t(r)] == one);
+        CHECK(calls[std::size_t(r)] <= int((n + std::size_t(ranks) - 1) / std::size_t(ranks)));
+        total += calls[std::size_t(r)];
+      }
+      CHECK(total == int(n)); // each chunk computed by one rank
+    }
+  }
+  // A chunk that throws on rank 1: rank 1 rethrows it, rank 0 learns it.
+  const auto [results, errors] = on_ranks<int>(2, [&](CGAL::Pmsum::Communicator& me, int) {
+    map_chunks<std::uint32_t>(4, false, &me, [&](std::size_t k, std::vector<std::uint32_t>& out) {
+      if (k == 3) throw std::runtime_error("injected failure");
+      chunk(k, out);
+    });
+    return 0;
+  });
+  CHECK(errors[1] == "injected failure");
+  CHECK(errors[0] == "rank 1: injected failure");
+  // Ranks that disagree on the number of chunks: every rank throws Invalid_input.
+  const auto [r2, e2] = on_ranks<int>(2, [&](CGAL::Pmsum::Communicator& me, int r) {
+    map_chunks<std::uint32_t>(r == 0 ? 4 : 5, false, &me, chunk);
+    return 0;
+  });
+  for (const std::string& e : e2) CHECK(e.find("different inputs") != std::string::npos);
 }

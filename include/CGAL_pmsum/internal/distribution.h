@@ -1,7 +1,9 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Stage 3 across processes (named parameter `communicator`). The decisions run in waves of
+// Stages 2 and 3 across processes (named parameter `communicator`). The normal filter's and
+// the octree filter's tests are shared out by chunks, every rank a fixed share of them, and
+// their results exchanged (map_chunks, parallel.h). The decisions run in waves of
 // pieces of feature pairs (parallel.h, candidates.h), and the waves do not depend on the
 // number of processes: the ranks take a wave's pieces one by one from a counter they share
 // (Communicator::make_counter), so that a rank whose pieces were quick takes more (the work
@@ -58,6 +60,14 @@ public:
     pod(std::uint64_t(s.size()));
     m_bytes += s;
   }
+  /// A vector of trivially copyable values, with its size.
+  template <class T>
+  void pods(const std::vector<T>& v)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "Byte_writer::pods: trivially copyable values");
+    pod(std::uint64_t(v.size()));
+    m_bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
   void rational(const CGAL::Exact_rational& q)
   {
     std::ostringstream os;
@@ -96,6 +106,16 @@ public:
     std::string s = m_bytes.substr(m_at, std::size_t(n));
     m_at += std::size_t(n);
     return s;
+  }
+  /// A vector written by Byte_writer::pods.
+  template <class T>
+  void pods(std::vector<T>& v)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "Byte_reader::pods: trivially copyable values");
+    const std::uint64_t n = pod<std::uint64_t>();
+    if (n > (m_bytes.size() - m_at) / sizeof(T)) throw std::length_error("Byte_reader: truncated message");
+    v.resize(std::size_t(n));
+    take(v.data(), std::size_t(n) * sizeof(T));
   }
   CGAL::Exact_rational rational()
   {
@@ -170,14 +190,19 @@ inline void agree(Communicator& comm, std::exception_ptr failure)
   check_statuses(readers, failure);
 }
 
+/// What every rank throws when the ranks find that they were given different work.
+inline Invalid_input different_inputs()
+{
+  return Invalid_input("the ranks were given different inputs or parameters: every rank must be given the same "
+                       "meshes, d and parameters");
+}
+
 /// Collective: throws Invalid_input on every rank unless every rank passes the same
 /// `fingerprint` (of its input and parameters: the ranks would otherwise take different steps).
 inline void check_same_work(Communicator& comm, const std::string& fingerprint)
 {
   for (const std::string& f : comm.all_gather(fingerprint))
-    if (f != fingerprint)
-      throw Invalid_input("the ranks were given different inputs or parameters: every rank must be given the same "
-                          "meshes, d and parameters");
+    if (f != fingerprint) throw different_inputs();
 }
 
 /// One rank's share of the decisions, as gathered into Statistics::ranks.

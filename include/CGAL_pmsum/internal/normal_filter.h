@@ -163,12 +163,14 @@ inline void facet_directions(const Mesh_data& M, Direction::Kind kind, Index t, 
 
 /// The kept feature pairs. Without the normal filter every feature pair is kept; pairs the
 /// filter would have dropped get the facet directions around their features. The tests run
-/// in parallel if asked (chunks of facets and edges); the result is sorted, hence the same.
+/// by chunks of facets and edges, in parallel if asked, shared among the ranks of `comm`
+/// (collective) if not null; the result is sorted, hence the same.
 /// Without the normal filter, throws Too_many_feature_pairs before allocating them if the
 /// (pair, direction) records to store would be more than `max_records`.
 inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_data& Q, bool use_normal_filter,
                                                bool parallel = false,
-                                               std::size_t max_records = std::size_t(-1))
+                                               std::size_t max_records = std::size_t(-1),
+                                               Communicator* comm = nullptr)
 {
   if (!use_normal_filter) {
     // Each pair (a, b) stores the facet directions around a and those around b (at most).
@@ -200,16 +202,17 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
     }
   }
   // Kept (pair, direction) records, per chunk of the loops below; sorted and merged at the end.
-  using Kept = std::pair<Pair_key, Direction>;
+  struct Kept
+  {
+    Pair_key first;
+    Direction second;
+    bool operator==(const Kept& o) const { return first == o.first && second == o.second; }
+  };
   auto keep_closure = [&](std::vector<Kept>& kept, Feature fp, Feature fq, const Direction& d) {
     for (Feature a : closure(P, fp))
       for (Feature b : closure(Q, fq)) kept.push_back({Pair_key::of(a, b), d});
   };
   constexpr std::size_t chunks = 64;
-  std::vector<std::vector<Kept>> kept_by_chunk(3 * chunks);
-  auto chunk_range = [](std::size_t chunk, std::size_t n) {
-    return std::make_pair(chunk * n / chunks, (chunk + 1) * n / chunks);
-  };
 
   // The direction grid limits the exact tests to pairs that may be extreme in a common
   // cell of directions (see direction_grid.h); the kept pairs are the same as with all pairs.
@@ -264,10 +267,10 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
   // Case 1: facet of P and vertex of Q, vertex of P and facet of Q.
   const auto q_vertices = vertex_cells(Q);
   const auto p_vertices = vertex_cells(P);
-  for_each_index(2 * chunks, parallel, [&](std::size_t job) {
+  auto kept_by_chunk = map_chunks<Kept>(2 * chunks, parallel, comm, [&](std::size_t job, std::vector<Kept>& kept) {
     const bool p_facets = job < chunks;
     const Mesh_data &F = p_facets ? P : Q, &V = p_facets ? Q : P;
-    const auto [first, last] = chunk_range(job % chunks, F.number_of_triangles());
+    const auto [first, last] = chunk_range(job % chunks, chunks, F.number_of_triangles());
     std::vector<Direction> dirs;
     for (Index t = Index(first); t < Index(last); ++t) {
       dirs.clear();
@@ -275,8 +278,8 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
       for (const Direction& d : dirs)
         for (Index v : candidates(p_facets ? q_vertices : p_vertices, d, V))
           if (vertex_is_extreme(V, v, d, P, Q)) {
-            if (p_facets) keep_closure(kept_by_chunk[job], {2, t}, {0, v}, d);
-            else keep_closure(kept_by_chunk[job], {0, v}, {2, t}, d);
+            if (p_facets) keep_closure(kept, {2, t}, {0, v}, d);
+            else keep_closure(kept, {0, v}, {2, t}, d);
           }
     }
   });
@@ -285,10 +288,9 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
   std::vector<std::vector<Index>> q_edges_by_cell(grid.size());
   for (Index b = 0; b < Q.number_of_edges(); ++b)
     for (Index c : q_edges[b]) q_edges_by_cell[c].push_back(b);
-  for_each_index(chunks, parallel, [&](std::size_t chunk) {
-    std::vector<Kept>& kept = kept_by_chunk[2 * chunks + chunk];
+  auto edge_pairs = map_chunks<Kept>(chunks, parallel, comm, [&](std::size_t chunk, std::vector<Kept>& kept) {
     std::vector<Index> seen(Q.number_of_edges(), no_index); // last edge of P that paired with b
-    const auto [first, last] = chunk_range(chunk, P.number_of_edges());
+    const auto [first, last] = chunk_range(chunk, chunks, P.number_of_edges());
     for (Index a = Index(first); a < Index(last); ++a) {
       for (Index c : p_edges[a])
         for (Index b : q_edges_by_cell[c]) {
@@ -307,13 +309,8 @@ inline Candidate_pairs candidate_feature_pairs(const Mesh_data& P, const Mesh_da
         }
     }
   });
-  std::vector<Kept> kept;
-  {
-    std::size_t n = 0;
-    for (const auto& k : kept_by_chunk) n += k.size();
-    kept.reserve(n);
-    for (auto& k : kept_by_chunk) { kept.insert(kept.end(), k.begin(), k.end()); k = {}; }
-  }
+  for (auto& k : edge_pairs) kept_by_chunk.push_back(std::move(k));
+  std::vector<Kept> kept = concatenate(std::move(kept_by_chunk));
   auto by_pair_then_direction = [](const Kept& x, const Kept& y) {
     return x.first == y.first ? x.second < y.second : x.first < y.first;
   };

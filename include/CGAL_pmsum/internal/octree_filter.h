@@ -83,8 +83,10 @@ class Distance_grid
 public:
   /// Grid over [lo, hi] with `resolution` points along the longest side. `tolerance` is an
   /// absolute bound far above the rounding errors of the coordinates involved.
+  /// The closest points are searched in parallel if asked, and shared among the ranks of
+  /// `comm` (collective) if not null.
   Distance_grid(const Mesh_data& M, const Point3& lo, const Point3& hi, int resolution, double tolerance,
-                std::size_t max_balls, bool parallel)
+                std::size_t max_balls, bool parallel, Communicator* comm)
     : m_lo(lo), m_tol(tolerance)
   {
     const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
@@ -112,26 +114,34 @@ public:
     }
     // More bare edges than that are ignored: distances to a subset of the mesh are upper bounds too.
     const bool few_edges = M.bare_edges.size() <= 1024;
-    for_each_index(N, parallel, [&](std::size_t i) {
-      const Point3 g = point(i);
-      double best = std::numeric_limits<double>::infinity();
-      Point3 closest = g;
-      if (M.number_of_triangles() > 0) {
-        const Epick::Point_3 c = surface.closest_point(Epick::Point_3(g[0], g[1], g[2]));
-        closest = {c.x(), c.y(), c.z()};
-        best = distance3(g, closest);
-      }
-      if (few_edges)
-        for (Index e : M.bare_edges) {
-          const Point3 c = closest_on_segment(g, M.points[M.edges[e].v[0]], M.points[M.edges[e].v[1]]);
-          if (distance3(g, c) < best) { best = distance3(g, c); closest = c; }
+    const std::size_t chunks = (std::min)(N, std::size_t(256));
+    const std::vector<Point3> closest = concatenate(map_chunks<Point3>(chunks, parallel, comm,
+      [&](std::size_t chunk, std::vector<Point3>& out) {
+        const auto [first, last] = chunk_range(chunk, chunks, N);
+        for (std::size_t i = first; i < last; ++i) {
+          const Point3 g = point(i);
+          double best = std::numeric_limits<double>::infinity();
+          Point3 c = g;
+          if (M.number_of_triangles() > 0) {
+            const Epick::Point_3 x = surface.closest_point(Epick::Point_3(g[0], g[1], g[2]));
+            c = {x.x(), x.y(), x.z()};
+            best = distance3(g, c);
+          }
+          if (few_edges)
+            for (Index e : M.bare_edges) {
+              const Point3 x = closest_on_segment(g, M.points[M.edges[e].v[0]], M.points[M.edges[e].v[1]]);
+              if (distance3(g, x) < best) { best = distance3(g, x); c = x; }
+            }
+          out.push_back(c);
         }
-      m_closest[i] = closest;
+      }));
+    for (std::size_t i = 0; i < N; ++i) {
+      m_closest[i] = closest[i];
       if (state[i] == 1) {
         m_inside[i] = 1;
-        m_radius[i] = best * (1 - 1e-9) - m_tol;
+        m_radius[i] = distance3(point(i), closest[i]) * (1 - 1e-9) - m_tol;
       }
-    });
+    }
 
     // Balls: inside points by decreasing radius, skipping one almost inside a kept ball.
     std::vector<std::size_t> inside;
@@ -294,7 +304,10 @@ class Interior_certificate
 {
 public:
   /// `resolution`: grid points along the longest side of each mesh's grid.
-  Interior_certificate(const Mesh_data& P, const Mesh_data& Q, int resolution, double tolerance, bool parallel)
+  /// Its distance grids are made in parallel if asked, and shared among the ranks of `comm`
+  /// (collective) if not null.
+  Interior_certificate(const Mesh_data& P, const Mesh_data& Q, int resolution, double tolerance, bool parallel,
+                       Communicator* comm)
   {
     const auto bp = mesh_box(P), bq = mesh_box(Q);
     // A ball inside X fits in X's box: its radius is at most half the box's smallest side.
@@ -306,8 +319,8 @@ public:
       return b;
     };
     const auto gp = grown(bp, max_radius(bq)), gq = grown(bq, max_radius(bp));
-    m_p.emplace(P, gp.first, gp.second, resolution, tolerance, max_balls, parallel);
-    m_q.emplace(Q, gq.first, gq.second, resolution, tolerance, max_balls, parallel);
+    m_p.emplace(P, gp.first, gp.second, resolution, tolerance, max_balls, parallel, comm);
+    m_q.emplace(Q, gq.first, gq.second, resolution, tolerance, max_balls, parallel, comm);
   }
 
   /// Is every point within distance rho of c inside int(P + Q)?
@@ -376,8 +389,9 @@ public:
     return key(cell[0], cell[1], cell[2]);
   }
 
-  /// Certifies the given leaves (sorted, unique), top-down over the octree levels.
-  void certify(std::vector<Key> alive, bool parallel)
+  /// Certifies the given leaves (sorted, unique), top-down over the octree levels, in
+  /// parallel if asked, shared among the ranks of `comm` (collective) if not null.
+  void certify(std::vector<Key> alive, bool parallel, Communicator* comm)
   {
     m_leaves = alive.size();
     m_certified.clear();
@@ -393,15 +407,19 @@ public:
       std::vector<Key> unique = nodes;
       std::sort(unique.begin(), unique.end());
       unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-      std::vector<std::uint8_t> ok(unique.size(), 0);
       const double size = m_h * double(Key(1) << level);
       // The candidates of a leaf are in it up to the leaf margin; centres are rounded.
       const double rho = 0.5 * std::sqrt(3.0) * (size + 2 * m_tol) * (1 + 1e-9) + m_tol;
-      for_each_index(unique.size(), parallel, [&](std::size_t i) {
-        Point3 c;
-        for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double(coordinate(unique[i], a)) + 0.5);
-        ok[i] = m_cert->certifies(c, rho);
-      });
+      const std::size_t chunks = (std::min)(unique.size(), std::size_t(256));
+      const std::vector<std::uint8_t> ok = concatenate(map_chunks<std::uint8_t>(chunks, parallel, comm,
+        [&](std::size_t chunk, std::vector<std::uint8_t>& out) {
+          const auto [first, last] = chunk_range(chunk, chunks, unique.size());
+          for (std::size_t i = first; i < last; ++i) {
+            Point3 c;
+            for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double(coordinate(unique[i], a)) + 0.5);
+            out.push_back(m_cert->certifies(c, rho));
+          }
+        }));
       std::vector<Key> next;
       for (std::size_t i = 0; i < alive.size(); ++i) {
         const std::size_t u = std::lower_bound(unique.begin(), unique.end(), nodes[i]) - unique.begin();
@@ -494,36 +512,35 @@ struct Octree_settings
 
 /// The octree filter of one level: the leaves holding the candidates of `pairs`, of size d
 /// as in the paper but small enough for the certificate's balls, certified. Empty if it
-/// cannot certify anything.
+/// cannot certify anything. In parallel if asked, shared among the ranks of `comm`
+/// (collective) if not null.
 inline std::optional<Octree_filter> make_level_octree(const Interior_certificate& certificate,
                                                       const Octree_settings& settings, const Candidate_pairs& pairs,
                                                       const Mesh_sampling& sp, const Mesh_sampling& sq, double d,
-                                                      bool parallel)
+                                                      bool parallel, Communicator* comm)
 {
   const double leaf = std::clamp(certificate.largest_ball() / 4, d / 8, d);
   std::optional<Octree_filter> octree(std::in_place, certificate, settings.lo, settings.hi, leaf, settings.tolerance);
   if (!octree->enabled() || pairs.pairs.empty()) return std::nullopt;
   // The leaves holding candidates, by chunks of pairs.
   const std::size_t chunks = (std::min)(pairs.pairs.size(), std::size_t(256));
-  std::vector<std::vector<Octree_filter::Key>> leaves(chunks);
-  for_each_index(chunks, parallel, [&](std::size_t chunk) {
-    Pair_candidates candidates;
-    auto& out = leaves[chunk];
-    for (std::size_t i = chunk * pairs.pairs.size() / chunks; i < (chunk + 1) * pairs.pairs.size() / chunks; ++i) {
-      candidates.load(sp, sq, pairs.pairs[i], true);
-      const std::size_t before = out.size();
-      candidates.for_each([&](std::size_t ip, std::size_t iq) {
-        if (auto k = octree->leaf(candidates.position(ip, iq))) out.push_back(*k);
-      });
-      std::sort(out.begin() + before, out.end());
-      out.erase(std::unique(out.begin() + before, out.end()), out.end());
-    }
-  });
-  std::vector<Octree_filter::Key> all;
-  for (auto& l : leaves) { all.insert(all.end(), l.begin(), l.end()); l = {}; }
+  std::vector<Octree_filter::Key> all = concatenate(map_chunks<Octree_filter::Key>(chunks, parallel, comm,
+    [&](std::size_t chunk, std::vector<Octree_filter::Key>& out) {
+      Pair_candidates candidates;
+      const auto [first, last] = chunk_range(chunk, chunks, pairs.pairs.size());
+      for (std::size_t i = first; i < last; ++i) {
+        candidates.load(sp, sq, pairs.pairs[i], true);
+        const std::size_t before = out.size();
+        candidates.for_each([&](std::size_t ip, std::size_t iq) {
+          if (auto k = octree->leaf(candidates.position(ip, iq))) out.push_back(*k);
+        });
+        std::sort(out.begin() + before, out.end());
+        out.erase(std::unique(out.begin() + before, out.end()), out.end());
+      }
+    }));
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
-  octree->certify(std::move(all), parallel);
+  octree->certify(std::move(all), parallel, comm);
   return octree;
 }
 

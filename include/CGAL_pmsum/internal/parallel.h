@@ -1,11 +1,11 @@
 // Copyright (c) 2026 CGAL_pmsum contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Parallel loops (TBB) that fall back to plain loops: for_each_index for the stages that
-// decide independent items (normal filter, octree filter), run_in_waves for the stage whose
-// results are committed in canonical order (decisions, covering net, output; shared among
-// ranks with distribution.h), and
-// Per_thread for the state each thread keeps (collision filters).
+// Parallel loops (TBB) that fall back to plain loops: map_chunks for the stages that decide
+// independent items (normal filter, octree filter; shared among ranks too), run_in_waves for
+// the stage whose results are committed in canonical order (decisions, covering net, output;
+// shared among ranks with distribution.h), and Per_thread for the state each thread keeps
+// (collision filters).
 
 #ifndef CGAL_PMSUM_INTERNAL_PARALLEL_H
 #define CGAL_PMSUM_INTERNAL_PARALLEL_H
@@ -26,6 +26,7 @@
 #include <functional>
 #include <numeric>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -47,6 +48,64 @@ void for_each_index(std::size_t n, bool parallel, const F& f)
   (void)parallel;
 #endif
   for (std::size_t i = 0; i < n; ++i) f(i);
+}
+
+/// The indices [first, last) of chunk k when n indices are cut into `chunks` chunks of about
+/// the same size.
+inline std::pair<std::size_t, std::size_t> chunk_range(std::size_t k, std::size_t chunks, std::size_t n)
+{ return {k * n / chunks, (k + 1) * n / chunks}; }
+
+/// The results of chunks (map_chunks), one chunk after the other.
+template <class T>
+std::vector<T> concatenate(std::vector<std::vector<T>>&& chunks)
+{
+  std::size_t n = 0;
+  for (const auto& c : chunks) n += c.size();
+  std::vector<T> all;
+  all.reserve(n);
+  for (auto& c : chunks) {
+    all.insert(all.end(), c.begin(), c.end());
+    c = {};
+  }
+  return all;
+}
+
+/// Runs f(k, results) for each chunk k in [0, n), in parallel if asked, and returns every
+/// chunk's results (f appends chunk k's to `results`, empty when called). With a communicator
+/// (collective), rank r runs the chunks r, r + K, r + 2K, ... of the K ranks and the ranks
+/// exchange their results, so that every rank returns all of them, the same as one process;
+/// a failure on one rank ends every rank (check_statuses). T: trivially copyable.
+template <class T, class F>
+std::vector<std::vector<T>> map_chunks(std::size_t n, bool parallel, Communicator* comm, const F& f)
+{
+  std::vector<std::vector<T>> results(n);
+  const std::size_t K = comm ? std::size_t(comm->size()) : 1, r = comm ? std::size_t(comm->rank()) : 0;
+  const std::size_t mine = n > r ? (n - r + K - 1) / K : 0;
+  std::exception_ptr failure;
+  try {
+    for_each_index(mine, parallel, [&](std::size_t j) { f(r + j * K, results[r + j * K]); });
+  } catch (...) {
+    if (!comm) throw;
+    failure = std::current_exception();
+  }
+  if (!comm || K == 1) {
+    if (failure) std::rethrow_exception(failure);
+    return results;
+  }
+  Byte_writer w;
+  write_status(w, failure, false);
+  w.pod(std::uint64_t(n));
+  if (!failure)
+    for (std::size_t k = r; k < n; k += K) w.pods(results[k]);
+  const std::vector<std::string> all = comm->all_gather(w.bytes());
+  std::vector<Byte_reader> readers(all.begin(), all.end());
+  check_statuses(readers, failure);
+  for (Byte_reader& in : readers)
+    if (in.pod<std::uint64_t>() != n) throw different_inputs();
+  for (std::size_t s = 0; s < K; ++s)
+    if (s != r)
+      for (std::size_t k = s; k < n; k += K) readers[s].pods(results[k]);
+  return results;
 }
 
 /// One T per thread, made from the same constructor arguments; a single T when sequential.

@@ -139,7 +139,7 @@ public:
     m_scale = largest_coordinate(mp) + largest_coordinate(mq);
     m_seconds_trees = seconds_since(start);
     start = Clock::now();
-    m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel, o.max_candidates);
+    m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel, o.max_candidates, o.communicator);
     m_seconds_normal_filter = seconds_since(start);
   }
 
@@ -182,8 +182,9 @@ public:
     if (m_geometry && m_o.use_octree_filter && !pairs.pairs.empty()) {
       const Octree_settings settings(mp, mq, d);
       if (!m_certificate)
-        m_certificate.emplace(mp, mq, Octree_settings::certificate_resolution(total), settings.tolerance, parallel);
-      octree = make_level_octree(*m_certificate, settings, pairs, sp, sq, d, parallel);
+        m_certificate.emplace(mp, mq, Octree_settings::certificate_resolution(total), settings.tolerance, parallel,
+                              m_o.communicator);
+      octree = make_level_octree(*m_certificate, settings, pairs, sp, sq, d, parallel, m_o.communicator);
       if (octree) {
         stats.octree_leaves = octree->number_of_leaves();
         stats.octree_certified_leaves = octree->number_of_certified_leaves();
