@@ -5,8 +5,9 @@
 //   mpi_balance P Q d_relative [scale_q] K1 K2 ...
 // For each K, the engine's own waves (internal::wave_end, internal::wave_work) of pieces of
 // feature pairs (internal::make_pieces) are taken by K ranks as the engine's ranks take them
-// from their shared counter: in order, each by the rank that is free first (of ranks free at
-// once, the one with the least work so far), with each piece's candidates as its time (the
+// from their shared counter: in the wave's order (internal::wave_order, the largest first),
+// each by the rank that is free first (of ranks free at once, the one with the least work
+// so far), with each piece's candidates as its time (the
 // real times vary more: the trim search). Prints one JSON line per K:
 //   largest_share   the largest rank's share of the whole work (the memory and the total work)
 //   critical_share  the sum over the waves of the wave's largest rank load, over the whole
@@ -73,10 +74,12 @@ int main(int argc, char** argv)
     const int k = std::atoi(argv[a]);
     std::vector<std::size_t> so_far(std::size_t(k), 0);
     double critical = 0;
+    std::vector<std::size_t> order;
     for (std::size_t first = 0; first < work.size();) {
       const std::size_t last = in::wave_end(work, first, in::wave_work(total));
       std::vector<std::size_t> load(std::size_t(k), 0); // in this wave
-      for (std::size_t i = first; i < last; ++i) {
+      in::wave_order(work, first, last, order);
+      for (std::size_t i : order) {
         // The rank free first; of ranks free at once (at the wave's start), any may win the
         // counter: modelled as the one with the least work so far.
         std::size_t r = 0;

@@ -225,19 +225,22 @@ public:
   const Rank_load& load() const { return m_load; }
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
 
-  /// Up to n more indices of the wave that ends at `last` for this rank, from the shared
-  /// counter; none when the wave has no more. The counter hands out 0, 1, 2, ... in turn, and
-  /// a rank stops at the first index beyond the wave, which it keeps for its own wave: every
-  /// index is taken by one rank, in its wave.
-  std::vector<std::size_t> take(const std::vector<std::size_t>& work, std::size_t last, std::size_t n)
+  /// Up to n more indices for this rank of the wave that starts at `first`, from the shared
+  /// counter, in the wave's `order` (its indices, in the order they are handed out); none
+  /// when the wave has no more. The counter hands out 0, 1, 2, ... in turn (k: the wave's
+  /// order[k - first]), and a rank stops at the first number beyond the wave, which it keeps
+  /// for the next wave: every index is taken by one rank, in its wave.
+  std::vector<std::size_t> take(const std::vector<std::size_t>& work, std::size_t first,
+                                const std::vector<std::size_t>& order, std::size_t n)
   {
     std::vector<std::size_t> taken;
     while (taken.size() < n) {
       if (!m_next) m_next = std::size_t(m_counter->fetch_add(1));
-      if (*m_next >= last) break;
-      taken.push_back(*m_next);
+      if (*m_next >= first + order.size()) break;
+      const std::size_t i = order[*m_next - first];
+      taken.push_back(i);
       ++m_load.pieces;
-      m_load.candidates += work[*m_next];
+      m_load.candidates += work[i];
       m_next.reset();
     }
     return taken;

@@ -23,6 +23,8 @@
 #include <chrono>
 #include <cstddef>
 #include <exception>
+#include <algorithm>
+#include <atomic>
 #include <functional>
 #include <numeric>
 #include <optional>
@@ -157,6 +159,25 @@ inline std::size_t number_of_threads()
 #endif
 }
 
+/// Runs f(k) for k in [0, n), in parallel if asked: the threads take the indices in turn,
+/// 0, 1, 2, ..., each the next one as it comes free.
+template <class F>
+void for_each_in_turn(std::size_t n, bool parallel, const F& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if (parallel) {
+    std::atomic<std::size_t> next{0};
+    tbb::parallel_for(std::size_t(0), number_of_threads(), [&](std::size_t) {
+      for (std::size_t k; (k = next++) < n;) f(k);
+    });
+    return;
+  }
+#else
+  (void)parallel;
+#endif
+  for (std::size_t k = 0; k < n; ++k) f(k);
+}
+
 /// The end of the wave of run_in_waves that starts at index `first`: the consecutive
 /// indices from `first` whose work reaches `wave_work`, at least one.
 inline std::size_t wave_end(const std::vector<std::size_t>& work, std::size_t first, std::size_t wave_work)
@@ -166,10 +187,22 @@ inline std::size_t wave_end(const std::vector<std::size_t>& work, std::size_t fi
   return last;
 }
 
+/// The order in which the indices [first, last) of a wave are processed (run_in_waves): the
+/// largest work first, in index order among equal work.
+inline void wave_order(const std::vector<std::size_t>& work, std::size_t first, std::size_t last,
+                       std::vector<std::size_t>& order)
+{
+  order.resize(last - first);
+  std::iota(order.begin(), order.end(), first);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return work[a] > work[b]; });
+}
+
 /// Runs process(i, buffer) for every i in [0, work.size()), in waves of consecutive indices
 /// holding about `wave_work` of work each (work[i] for index i; at least one index a wave),
-/// in parallel within a wave if asked; each index has a cleared Buffer of its own. After
-/// each wave, on the calling thread: commit(i, buffer) for each index of the wave in order,
+/// in parallel within a wave if asked, the largest work first, taken in turn by the threads
+/// (and the ranks) as they come free, so that those that take a wave's last indices wait
+/// little for each other; each index has a cleared Buffer of its own. After each wave, on the
+/// calling thread: commit(i, buffer) for each index of the wave in order,
 /// then progress(fraction of the work done), which cancels (throws Operation_cancelled) by
 /// returning false. The waves depend neither on the number of threads nor on the ranks.
 /// With `ranks` (distribution.h), this rank processes the indices of each wave it takes from
@@ -183,7 +216,7 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
   std::size_t total = 0, done = 0;
   for (std::size_t w : work) total += w;
   std::vector<Buffer> buffers;
-  std::vector<std::size_t> mine;
+  std::vector<std::size_t> mine, order;
   const std::size_t batch = parallel ? number_of_threads() : 1;
   // With ranks, whatever fails (or cancels) on this rank travels with the next exchange.
   std::exception_ptr failure;
@@ -193,15 +226,15 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
     if (buffers.size() < last - first) buffers.resize(last - first);
     for (std::size_t k = 0; k < last - first; ++k) buffers[k].clear();
     const auto start = std::chrono::steady_clock::now();
+    wave_order(work, first, last, order);
     mine.clear();
     try {
       if (!ranks) {
-        mine.resize(last - first);
-        std::iota(mine.begin(), mine.end(), first);
-        for_each_index(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
+        mine = order;
+        for_each_in_turn(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
       } else if (!failure && !cancelled) {
         // Taken from the ranks' counter as many at a time as there are threads.
-        for (std::vector<std::size_t> taken; !(taken = ranks->take(work, last, batch)).empty();) {
+        for (std::vector<std::size_t> taken; !(taken = ranks->take(work, first, order, batch)).empty();) {
           mine.insert(mine.end(), taken.begin(), taken.end());
           for_each_index(taken.size(), parallel, [&](std::size_t k) { process(taken[k], buffers[taken[k] - first]); });
         }
