@@ -567,6 +567,19 @@ TEST_CASE("ranks: a failure on one rank ends every rank, with its message", "[ra
   CHECK(errors[0] == "rank 1: injected failure");
 }
 
+TEST_CASE("ranks: ranks given different meshes all throw Invalid_input, before sharing any test", "[ranks]")
+{
+  // The same sizes, P moved a little on rank 1: the meshes' fingerprint tells them apart.
+  const Soup P = pmsum_shapes::shape_preset("knot"), Q = pmsum_shapes::shape_preset("tetrahedron");
+  Soup moved = P;
+  for (auto& p : moved.points)
+    for (double& c : p) c *= 1.001;
+  const auto [results, errors] = on_ranks<Result>(2, [&](CGAL::Pmsum::Communicator& me, int r) {
+    return run(r == 0 ? P : moved, Q, 0.15, CGAL::parameters::communicator(&me));
+  });
+  for (const std::string& e : errors) CHECK(e.find("different inputs") != std::string::npos);
+}
+
 TEST_CASE("ranks: a cancellation on one rank ends every rank", "[ranks]")
 {
   const Soup P = pmsum_shapes::shape_preset("knot"), Q = pmsum_shapes::shape_preset("tetrahedron");

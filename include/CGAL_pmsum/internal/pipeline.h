@@ -139,6 +139,8 @@ public:
     m_scale = largest_coordinate(mp) + largest_coordinate(mq);
     m_seconds_trees = seconds_since(start);
     start = Clock::now();
+    // The ranks share the normal filter's tests: they must have the same meshes first.
+    if (o.communicator) check_same_work(*o.communicator, mesh_fingerprint(mp, mq));
     m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel, o.max_candidates, o.communicator);
     m_seconds_normal_filter = seconds_since(start);
   }
@@ -274,6 +276,26 @@ public:
   }
 
 private:
+  /// What the ranks must agree on before they share the filters' tests: the meshes.
+  static std::string mesh_fingerprint(const Mesh_data& mp, const Mesh_data& mq)
+  {
+    Byte_writer w;
+    for (const Mesh_data* m : {&mp, &mq}) {
+      std::uint64_t h = 0xcbf29ce484222325ull; // FNV-1a of the points' and the triangles' bytes
+      auto add = [&](const auto& values) {
+        const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+        for (std::size_t i = 0; i < values.size() * sizeof(values[0]); ++i) h = (h ^ bytes[i]) * 0x100000001b3ull;
+      };
+      add(m->points);
+      add(m->triangles);
+      for (Index e : m->bare_edges) add(m->edges[e].v);
+      w.pod(std::uint64_t(m->points.size()));
+      w.pod(std::uint64_t(m->triangles.size()));
+      w.pod(h);
+    }
+    return w.bytes();
+  }
+
   /// What the ranks must agree on before they share the decisions (distribution.h).
   std::string fingerprint(double d, const std::vector<std::size_t>& work) const
   {
