@@ -66,7 +66,7 @@ public:
   {
     static_assert(std::is_trivially_copyable<T>::value, "Byte_writer::pods: trivially copyable values");
     pod(std::uint64_t(v.size()));
-    m_bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    if (!v.empty()) m_bytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
   void rational(const CGAL::Exact_rational& q)
   {
@@ -135,6 +135,7 @@ private:
   void take(void* to, std::size_t n)
   {
     if (n > m_bytes.size() - m_at) throw std::length_error("Byte_reader: truncated message");
+    if (n == 0) return; // `to` may be null (an empty vector's data)
     std::memcpy(to, m_bytes.data() + m_at, n);
     m_at += n;
   }
