@@ -96,7 +96,6 @@ public:
     const std::size_t N = std::size_t(m_n[0]) * m_n[1] * m_n[2];
     m_inside.assign(N, 0);
     m_radius.assign(N, 0);
-    m_closest.resize(N);
 
     const std::vector<std::uint8_t> state = classify(M); // 0 outside, 1 inside, 2 unknown
     // An AABB tree of the triangles, for closest points (built, with its distance search
@@ -115,7 +114,7 @@ public:
     // More bare edges than that are ignored: distances to a subset of the mesh are upper bounds too.
     const bool few_edges = M.bare_edges.size() <= 1024;
     const std::size_t chunks = (std::min)(N, std::size_t(256));
-    const std::vector<Point3> closest = concatenate(map_chunks<Point3>(chunks, parallel, comm,
+    m_closest = concatenate(map_chunks<Point3>(chunks, parallel, comm,
       [&](std::size_t chunk, std::vector<Point3>& out) {
         const auto [first, last] = chunk_range(chunk, chunks, N);
         for (std::size_t i = first; i < last; ++i) {
@@ -136,10 +135,9 @@ public:
         }
       }));
     for (std::size_t i = 0; i < N; ++i) {
-      m_closest[i] = closest[i];
       if (state[i] == 1) {
         m_inside[i] = 1;
-        m_radius[i] = distance3(point(i), closest[i]) * (1 - 1e-9) - m_tol;
+        m_radius[i] = distance3(point(i), m_closest[i]) * (1 - 1e-9) - m_tol;
       }
     }
 
