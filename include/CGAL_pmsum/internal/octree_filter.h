@@ -113,10 +113,8 @@ public:
     }
     // More bare edges than that are ignored: distances to a subset of the mesh are upper bounds too.
     const bool few_edges = M.bare_edges.size() <= 1024;
-    const std::size_t chunks = (std::min)(N, std::size_t(256));
-    m_closest = concatenate(map_chunks<Point3>(chunks, parallel, comm,
-      [&](std::size_t chunk, std::vector<Point3>& out) {
-        const auto [first, last] = chunk_range(chunk, chunks, N);
+    m_closest = map_ranges<Point3>(N, parallel, comm,
+      [&](std::size_t first, std::size_t last, std::vector<Point3>& out) {
         for (std::size_t i = first; i < last; ++i) {
           const Point3 g = point(i);
           double best = std::numeric_limits<double>::infinity();
@@ -133,7 +131,7 @@ public:
             }
           out.push_back(c);
         }
-      }));
+      });
     for (std::size_t i = 0; i < N; ++i) {
       if (state[i] == 1) {
         m_inside[i] = 1;
@@ -408,16 +406,14 @@ public:
       const double size = m_h * double(Key(1) << level);
       // The candidates of a leaf are in it up to the leaf margin; centres are rounded.
       const double rho = 0.5 * std::sqrt(3.0) * (size + 2 * m_tol) * (1 + 1e-9) + m_tol;
-      const std::size_t chunks = (std::min)(unique.size(), std::size_t(256));
-      const std::vector<std::uint8_t> ok = concatenate(map_chunks<std::uint8_t>(chunks, parallel, comm,
-        [&](std::size_t chunk, std::vector<std::uint8_t>& out) {
-          const auto [first, last] = chunk_range(chunk, chunks, unique.size());
+      const std::vector<std::uint8_t> ok = map_ranges<std::uint8_t>(unique.size(), parallel, comm,
+        [&](std::size_t first, std::size_t last, std::vector<std::uint8_t>& out) {
           for (std::size_t i = first; i < last; ++i) {
             Point3 c;
             for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double(coordinate(unique[i], a)) + 0.5);
             out.push_back(m_cert->certifies(c, rho));
           }
-        }));
+        });
       std::vector<Key> next;
       for (std::size_t i = 0; i < alive.size(); ++i) {
         const std::size_t u = std::lower_bound(unique.begin(), unique.end(), nodes[i]) - unique.begin();
@@ -521,11 +517,9 @@ inline std::optional<Octree_filter> make_level_octree(const Interior_certificate
   std::optional<Octree_filter> octree(std::in_place, certificate, settings.lo, settings.hi, leaf, settings.tolerance);
   if (!octree->enabled() || pairs.pairs.empty()) return std::nullopt;
   // The leaves holding candidates, by chunks of pairs.
-  const std::size_t chunks = (std::min)(pairs.pairs.size(), std::size_t(256));
-  std::vector<Octree_filter::Key> all = concatenate(map_chunks<Octree_filter::Key>(chunks, parallel, comm,
-    [&](std::size_t chunk, std::vector<Octree_filter::Key>& out) {
+  std::vector<Octree_filter::Key> all = map_ranges<Octree_filter::Key>(pairs.pairs.size(), parallel, comm,
+    [&](std::size_t first, std::size_t last, std::vector<Octree_filter::Key>& out) {
       Pair_candidates candidates;
-      const auto [first, last] = chunk_range(chunk, chunks, pairs.pairs.size());
       for (std::size_t i = first; i < last; ++i) {
         candidates.load(sp, sq, pairs.pairs[i], true);
         const std::size_t before = out.size();
@@ -535,7 +529,7 @@ inline std::optional<Octree_filter> make_level_octree(const Interior_certificate
         std::sort(out.begin() + before, out.end());
         out.erase(std::unique(out.begin() + before, out.end()), out.end());
       }
-    }));
+    });
   std::sort(all.begin(), all.end());
   all.erase(std::unique(all.begin(), all.end()), all.end());
   octree->certify(std::move(all), parallel, comm);

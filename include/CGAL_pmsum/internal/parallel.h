@@ -110,6 +110,19 @@ std::vector<std::vector<T>> map_chunks(std::size_t n, bool parallel, Communicato
   return results;
 }
 
+/// map_chunks over the indices [0, n) cut into at most 256 ranges of about the same size:
+/// f(first, last, results) appends the results of indices [first, last); returns them all,
+/// in the order of the indices.
+template <class T, class F>
+std::vector<T> map_ranges(std::size_t n, bool parallel, Communicator* comm, const F& f)
+{
+  const std::size_t chunks = (std::min)(n, std::size_t(256));
+  return concatenate(map_chunks<T>(chunks, parallel, comm, [&](std::size_t chunk, std::vector<T>& out) {
+    const auto [first, last] = chunk_range(chunk, chunks, n);
+    f(first, last, out);
+  }));
+}
+
 /// One T per thread, made from the same constructor arguments; a single T when sequential.
 template <class T>
 class Per_thread
@@ -216,7 +229,7 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
   std::size_t total = 0, done = 0;
   for (std::size_t w : work) total += w;
   std::vector<Buffer> buffers;
-  std::vector<std::size_t> mine, order;
+  std::vector<std::size_t> mine, order; // mine: the indices this rank processed (with ranks)
   const std::size_t batch = parallel ? number_of_threads() : 1;
   // With ranks, whatever fails (or cancels) on this rank travels with the next exchange.
   std::exception_ptr failure;
@@ -230,8 +243,7 @@ void run_in_waves(const std::vector<std::size_t>& work, std::size_t wave_work, b
     mine.clear();
     try {
       if (!ranks) {
-        mine = order;
-        for_each_in_turn(mine.size(), parallel, [&](std::size_t k) { process(mine[k], buffers[mine[k] - first]); });
+        for_each_in_turn(order.size(), parallel, [&](std::size_t k) { process(order[k], buffers[order[k] - first]); });
       } else if (!failure && !cancelled) {
         // Taken from the ranks' counter as many at a time as there are threads.
         for (std::vector<std::size_t> taken; !(taken = ranks->take(work, first, order, batch)).empty();) {
