@@ -191,6 +191,23 @@ inline void agree(Communicator& comm, std::exception_ptr failure)
   check_statuses(readers, failure);
 }
 
+/// FNV-1a (64 bits) of bytes: the fingerprints that the ranks compare (check_same_work).
+class Fnv1a
+{
+public:
+  /// Adds the bytes of the values of a contiguous container (trivially copyable values).
+  template <class Values>
+  void add(const Values& values)
+  {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    for (std::size_t i = 0; i < values.size() * sizeof(values[0]); ++i) m_h = (m_h ^ bytes[i]) * 0x100000001b3ull;
+  }
+  std::uint64_t value() const { return m_h; }
+
+private:
+  std::uint64_t m_h = 0xcbf29ce484222325ull;
+};
+
 /// What every rank throws when the ranks find that they were given different work.
 inline Invalid_input different_inputs()
 {

@@ -281,17 +281,13 @@ private:
   {
     Byte_writer w;
     for (const Mesh_data* m : {&mp, &mq}) {
-      std::uint64_t h = 0xcbf29ce484222325ull; // FNV-1a of the points' and the triangles' bytes
-      auto add = [&](const auto& values) {
-        const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-        for (std::size_t i = 0; i < values.size() * sizeof(values[0]); ++i) h = (h ^ bytes[i]) * 0x100000001b3ull;
-      };
-      add(m->points);
-      add(m->triangles);
-      for (Index e : m->bare_edges) add(m->edges[e].v);
+      Fnv1a h; // of the points, the triangles and the bare edges
+      h.add(m->points);
+      h.add(m->triangles);
+      for (Index e : m->bare_edges) h.add(m->edges[e].v);
       w.pod(std::uint64_t(m->points.size()));
       w.pod(std::uint64_t(m->triangles.size()));
-      w.pod(h);
+      w.pod(h.value());
     }
     return w.bytes();
   }
@@ -305,10 +301,10 @@ private:
     for (bool b : {m_o.use_normal_filter, m_o.use_cd_filter, m_o.use_octree_filter, m_o.use_covering_net,
                    m_o.use_trim_points, m_o.search_islands, m_o.keep_vertex_sums, m_coarse_to_fine})
       w.pod(std::uint8_t(b));
-    std::uint64_t h = 0xcbf29ce484222325ull; // FNV-1a of the work of every piece
-    for (std::size_t x : work) h = (h ^ std::uint64_t(x)) * 0x100000001b3ull;
+    Fnv1a h; // of the work of every piece
+    h.add(work);
     w.pod(std::uint64_t(work.size()));
-    w.pod(h);
+    w.pod(h.value());
     return w.bytes();
   }
 
