@@ -215,7 +215,8 @@ int command_validate(int argc, char** argv)
       std::cout << "  mesh              " << mesh_error << "\n";
     else
       std::cout << "  mesh              " << ms.vertices << " vertices, " << ms.triangles << " triangles (d = "
-                << ms.covering_distance << ", " << ms.refinements << " refinements)\n"
+                << ms.covering_distance << ", " << ms.refinements << " refinements"
+                << (ms.by_planes ? ", plane by plane" : "") << ")\n"
                 << "  mesh checks       " << (c.valid() ? "closed, manifold, self-intersection free, bounding a volume" : c.failures())
                 << "; " << c.shells << " shells (" << c.void_shells << " voids), exact: " << coverage.size() << " ("
                 << voids << ")\n"

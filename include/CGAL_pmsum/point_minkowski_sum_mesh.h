@@ -5,7 +5,9 @@
 // the boundary of P + Q without self-intersections, whose vertices are output points of
 // point_minkowski_sum() (each exactly on the boundary). The points (the default (d/2, d)-net)
 // are joined by CGAL's advancing-front surface reconstruction, chosen and repaired with the
-// points' normals (internal/mesh_reconstruction.h); the result is checked (check_mesh.h), and if
+// points' normals (internal/mesh_reconstruction.h); where that mesh is refused, the same points
+// are joined plane by plane (internal/plane_triangulation.h: a triangle never leaves the plane
+// of a face, so it never bridges a narrow passage); the result is checked (check_mesh.h), and if
 // a check fails, or an output point the reconstruction left out lies as far as the covering
 // distance used or farther from the mesh, the sum is recomputed with a smaller one. A mesh that fails every
 // check is never returned: Mesh_reconstruction_failed is thrown instead.
@@ -21,6 +23,7 @@
 
 #include <CGAL_pmsum/check_mesh.h>
 #include <CGAL_pmsum/internal/mesh_reconstruction.h>
+#include <CGAL_pmsum/internal/plane_triangulation.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
 #include <limits>
@@ -37,6 +40,8 @@ struct Mesh_statistics
   Statistics sum;              ///< the last point_minkowski_sum() run
   double covering_distance = 0;///< the `d` of that run (`d`, or smaller after refinements)
   int refinements = 0;         ///< how many times `d` was halved because a check failed
+  /// the mesh was made plane by plane: the advancing front's mesh of the same points was refused
+  bool by_planes = false;
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
   std::size_t triangles = 0;   ///< triangles of the mesh
   Mesh_checks checks;          ///< the checks of the mesh returned
@@ -125,21 +130,36 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     ms.sum = stats;
     ms.seconds_sum += seconds_since(t_sum);
     const auto t_mesh = Clock::now();
-    ms.checks = reconstruct_mesh<ConcurrencyTag>(points, normals, dl, mesh);
-    ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
-                                          : std::numeric_limits<double>::infinity();
-    ms.seconds_mesh += seconds_since(t_mesh);
-    ms.covering_distance = dl;
-    ms.refinements = level;
-    if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer &&
-        ms.point_distance < dl) {
-      ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
-      ms.triangles = faces(mesh).size();
-      return;
+    const auto positions = double_positions(points);
+    // The advancing front first; where its mesh is refused, the points plane by plane
+    // (internal/plane_triangulation.h), which needs the CD filter's exact test at a point.
+    const Cd_geometry* geometry = pipeline.geometry();
+    for (int way = 0; way < (geometry ? 2 : 1); ++way) {
+      const auto t_way = Clock::now();
+      std::vector<std::array<std::size_t, 3>> triangles;
+      if (way == 0) {
+        triangles = advancing_front_triangles(positions, normals);
+      } else {
+        Cd_filter cd(geometry);
+        triangles = plane_triangles(positions, normals, dl, [&](const std::array<double, 3>& x) { return cd.is_free_at(x); });
+      }
+      ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
+      ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
+                                            : std::numeric_limits<double>::infinity();
+      ms.seconds_mesh += seconds_since(t_way);
+      ms.covering_distance = dl;
+      ms.refinements = level;
+      if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer &&
+          ms.point_distance < dl) {
+        ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
+        ms.triangles = faces(mesh).size();
+        ms.by_planes = way == 1;
+        return;
+      }
+      failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
+                  (way == 0 ? " by the advancing front " : " plane by plane ") + level_failure(ms, most_outer);
+      clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
-    failures += std::string(level == 0 ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) + " " +
-                level_failure(ms, most_outer);
-    clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
   }
   throw Mesh_reconstruction_failed("no valid mesh of the sum's boundary could be made: " + failures +
                                    "; so none is returned");
@@ -156,8 +176,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// bounds a volume (outer shells outward, voids inward), it has no more outer shells than the
 /// sum can have (one per pair of connected components of `P` and `Q`), and every output point
 /// of the sum lies closer than `d'` to it (`d'` the covering distance used): if the
-/// reconstruction at `d`
-/// fails a check, the sum is recomputed at `d/2`, then `d/4`; if that fails too,
+/// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
+/// planes of the sum's faces; `Mesh_statistics::by_planes`); if that fails too, the sum is
+/// recomputed at `d/2`, then `d/4`; if every one fails,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
 /// Proved: every point of the exact boundary is closer than `d' + e` to the mesh, `e` the

@@ -8,6 +8,11 @@
 // already closer than d/2 to N is covered whatever it is, so it needs no collision test.
 // (Design note: shared/design/covering-net.md.)
 //
+// Facing points: a point does not cover one whose outward normal makes more than 120 degrees
+// with its own (the two walls of a passage narrower than d/2, the two sides of a part thinner
+// than d/2). Both are kept, closer than d/2 to each other: a reconstruction needs points on
+// both sides, and covering only needs more points. A zero normal (unknown) faces none.
+//
 // Distances are computed in double on rounded positions, with a margin that makes both
 // promises hold for the exact points: a candidate counts as covered only if its exact
 // distance is below d/2, and net points are at least d/2 - 2 * margin apart, where the margin
@@ -47,11 +52,16 @@ public:
   bool enabled() const { return m_enabled; }
   std::size_t size() const { return m_points.size(); }
   const Point3& point(std::size_t i) const { return m_points[i]; }
-  /// Lower bound of the distance between two points of the net (exact points).
+  /// Lower bound of the distance between two points of the net (exact points) that do not
+  /// face each other.
   double spacing() const { return m_d / 2 - 2 * m_margin; }
 
-  /// Is a point of the net closer than r <= d/2 to (the exact point rounded to) x?
-  bool covers_within(const Point3& x, double r) const
+  /// Do points of unit outward normals a and b (or zero) face each other?
+  static bool facing(const Point3& a, const Point3& b) { return dot(a, b) < -0.5; }
+
+  /// Is a point of the net that does not face x closer than r <= d/2 to (the exact point
+  /// rounded to) x? `normal`: x's unit outward normal, or zero.
+  bool covers_within(const Point3& x, double r, const Point3& normal = {0, 0, 0}) const
   {
     const double rr = r - m_margin;
     if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
@@ -69,21 +79,23 @@ public:
       for (std::uint32_t n = first; n != none; n = m_next[n]) {
         const Point3& y = m_points[n];
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-        if (dx * dx + dy * dy + dz * dz < rr * rr) return true;
+        if (dx * dx + dy * dy + dz * dz < rr * rr && !facing(m_normals[n], normal)) return true;
       }
     }
     return false;
   }
 
-  /// Is a point of the net closer than d/2 to (the exact point rounded to) x?
-  bool covers(const Point3& x) const { return covers_within(x, m_d / 2); }
+  /// Is a point of the net that does not face x closer than d/2 to it?
+  bool covers(const Point3& x, const Point3& normal = {0, 0, 0}) const { return covers_within(x, m_d / 2, normal); }
 
-  /// Adds x to the net (the caller has checked that it is not covered).
-  void insert(const Point3& x)
+  /// Adds x, of unit outward normal `normal` (or zero), to the net (the caller has checked
+  /// that it is not covered).
+  void insert(const Point3& x, const Point3& normal = {0, 0, 0})
   {
     if (!m_enabled) return;
     std::uint32_t& last = m_cells.at(key(cell_of(x)));
     m_points.push_back(x);
+    m_normals.push_back(normal);
     m_next.push_back(last);
     last = std::uint32_t(m_points.size() - 1);
   }
@@ -159,7 +171,7 @@ private:
   double m_d, m_scale, m_margin, m_cell;
   bool m_enabled;
   Cell_table m_cells;
-  std::vector<Point3> m_points;
+  std::vector<Point3> m_points, m_normals;
   std::vector<std::uint32_t> m_next; // previous point of the same cell
 };
 

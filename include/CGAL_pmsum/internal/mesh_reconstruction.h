@@ -16,7 +16,8 @@
 // Where a filled hole crosses the triangles beside it, those are cut away with their
 // neighbourhood and the hole filled again. Shells smaller than d (bubbles closed on a few
 // points beside a crease) are removed. Where the result still fails a check,
-// point_minkowski_sum_mesh() refines.
+// point_minkowski_sum_mesh() tries the same points plane by plane (plane_triangulation.h),
+// through the same repairs and checks (mesh_from_triangles()), then refines.
 
 #ifndef CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
 #define CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
@@ -139,9 +140,11 @@ void fill_holes(TriangleMesh& mesh, double longest_edge)
     if (size > 300) continue;
     std::vector<face_descriptor> added;
     PMP::triangulate_hole(mesh, h, std::back_inserter(added));
-    bool cuts = false;
+    bool cuts = false; // (the hole's own border edges may be long: faces of the plane-wise way)
+    const std::set<face_descriptor> filling(added.begin(), added.end());
     for (face_descriptor f : added)
-      for (halfedge_descriptor e : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) cuts = cuts || too_long(e);
+      for (halfedge_descriptor e : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+        cuts = cuts || (filling.count(face(opposite(e, mesh), mesh)) && too_long(e));
     if (cuts)
       for (face_descriptor f : added) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
   }
@@ -199,25 +202,39 @@ void remove_bubbles(TriangleMesh& mesh, double d)
   if (small.size() < n) PMP::remove_connected_components(mesh, small, component);
 }
 
-/// Joins `points` (exact or not; reconstructed from their double values; a d-covering) with
-/// their unit outward `normals` into `mesh`, oriented to bound a volume. Returns the mesh's checks; the
-/// mesh is left empty if the triangles do not form an oriented manifold.
-template <class ConcurrencyTag, class TriangleMesh, class Point>
-Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
-                             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
-                             double d, TriangleMesh& mesh)
+/// The double positions of `points` (exact or not).
+template <class Point>
+std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> double_positions(const std::vector<Point>& points)
 {
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  std::vector<Epick::Point_3> positions;
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> positions;
   positions.reserve(points.size());
   for (const Point& p : points)
     positions.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  return positions;
+}
+
+/// The triangles that CGAL's advancing front makes of `positions` (a d-covering), chosen by
+/// their unit outward `normals` (Normal_consistent_priority).
+inline std::vector<std::array<std::size_t, 3>>
+advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
+                          const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals)
+{
   std::vector<std::array<std::size_t, 3>> triangles;
   on_own_thread([&] {
     CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
                                                  Normal_consistent_priority{&normals});
   });
+  return triangles;
+}
+
+/// Makes `triangles` (indices into `points`, a d-covering) into `mesh`, oriented to bound a
+/// volume: holes closed, crossings cut and closed again, bubbles removed. Returns the mesh's
+/// checks; the mesh is left empty if the triangles do not form an oriented manifold.
+template <class ConcurrencyTag, class TriangleMesh, class Point>
+Mesh_checks mesh_from_triangles(const std::vector<Point>& points,
+                                const std::vector<std::array<std::size_t, 3>>& triangles, double d, TriangleMesh& mesh)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
   std::vector<std::vector<std::size_t>> polygons;
   polygons.reserve(triangles.size());
   for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
@@ -225,7 +242,7 @@ Mesh_checks reconstruct_mesh(const std::vector<Point>& points,
   clear(mesh);
   if (!PMP::orient_polygon_soup(soup_points, polygons) || !PMP::is_polygon_soup_a_polygon_mesh(polygons))
     return Mesh_checks{}; // not orientable, or not a manifold mesh
-  PMP::remove_isolated_points_in_polygon_soup(soup_points, polygons); // points the reconstruction left out
+  PMP::remove_isolated_points_in_polygon_soup(soup_points, polygons); // points the triangles left out
   PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, mesh);
   fill_holes(mesh, 3 * d);
   // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),

@@ -130,6 +130,9 @@ public:
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value || parallel,
                 "CGAL::Parallel_tag needs TBB (link with CGAL::TBB_support)");
 
+  /// The meshes and trees of the CD filter; null if the pipeline has none (use_cd_filter false).
+  const Cd_geometry* geometry() const { return m_geometry ? &*m_geometry : nullptr; }
+
   /// `coarse_to_fine`: keep each level's decisions for the next, finer one.
   Pipeline(const Mesh_data& mp, const Mesh_data& mq, const Pipeline_options& o, bool coarse_to_fine = false)
     : m_p(mp), m_q(mq), m_o(o), m_coarse_to_fine(coarse_to_fine && o.use_cd_filter), m_created(Clock::now())
@@ -142,6 +145,13 @@ public:
     // The ranks share the normal filter's tests: they must have the same meshes first.
     if (o.communicator) check_same_work(*o.communicator, mesh_fingerprint(mp, mq));
     m_pairs = candidate_feature_pairs(mp, mq, o.use_normal_filter, parallel, o.max_candidates, o.communicator);
+    // Unit outward normals of the directions, for the net (facing points do not cover each other).
+    m_normals.reserve(m_pairs.directions.size());
+    for (const Direction& direction : m_pairs.directions) {
+      const auto n = direction.vector<double>(mp, mq);
+      const double length = std::sqrt(dot(n, n));
+      m_normals.push_back(length > 0 ? Point3{n[0] / length, n[1] / length, n[2] / length} : Point3{0, 0, 0});
+    }
     m_seconds_normal_filter = seconds_since(start);
   }
 
@@ -214,7 +224,7 @@ public:
     };
     // Coarse to fine: the coarser level's points (at least d/2 apart) come first.
     for (const Tentative& t : m_output) {
-      net->insert(t.x);
+      net->insert(t.x, m_normals[t.direction]);
       output_point(t);
     }
     Decision_context context{&pairs, &sp, &sq};
@@ -225,6 +235,7 @@ public:
     }
     context.octree = octree ? &*octree : nullptr;
     context.net = net ? &*net : nullptr;
+    context.normals = &m_normals;
     context.use_cd_filter = bool(m_geometry);
     context.record_decisions = m_coarse_to_fine;
     context.keep_vertex_sums = m_o.keep_vertex_sums;
@@ -316,6 +327,7 @@ private:
   double m_scale = 0; // bound of the candidates' coordinates
   std::optional<Cd_geometry> m_geometry;
   Candidate_pairs m_pairs;
+  std::vector<Point3> m_normals; // of m_pairs.directions
   std::optional<Interior_certificate> m_certificate;
   double m_seconds_trees = 0, m_seconds_normal_filter = 0;
   std::optional<Mesh_sampling> m_sp, m_sq; // the last level's

@@ -1,0 +1,240 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The mesh stage's second way of joining the output points into triangles: plane by plane.
+// The boundary of a sum of polyhedra is made of planar faces, and every output point lies on
+// one (inside a convolution facet: it has that facet's normal) or on several (on a crease or
+// a trim curve: no normal). The points are grouped by the plane they lie on (the planes of
+// the points that have a normal; a point without one joins every such plane near it that it
+// lies on), each plane's points are triangulated in the plane (2D Delaunay), and a triangle is
+// kept when its centroid is on that plane's face of the boundary: just outside the plane
+// (along its outward normal) the sum is free, just inside it collides (the exact CD test at
+// a point). A triangle never leaves its plane, so it never bridges a narrow passage, the two
+// sides of a thin part or two shells: where the advancing front fails on such sums, this
+// succeeds. Creases come out where the planes' triangles share the crease points; what is
+// left open (a face too thin to hold a point with a normal) is for fill_holes().
+//
+// Grouping by plane compares the points' double normals and offsets within a tolerance of
+// about a billionth of the model's size: it chooses the triangles, it decides nothing about
+// the boundary (the CD test does, exactly, and check_mesh() checks the result).
+
+#ifndef CGAL_PMSUM_INTERNAL_PLANE_TRIANGULATION_H
+#define CGAL_PMSUM_INTERNAL_PLANE_TRIANGULATION_H
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// A plane of output points: unit outward normal, offset (normal . x) and the points on it.
+struct Point_plane
+{
+  CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3 normal;
+  double offset;
+  std::vector<std::size_t> points;
+};
+
+/// Groups `positions` by plane: one plane per distinct (normal, offset) of the points with a
+/// normal (equal within `tolerance`, relative to 1 for the normal and to `scale` for the
+/// offset); a point without a normal joins the planes of the points within 2 d of it that it
+/// lies on (within tolerance * scale), and so on along crease rows.
+inline std::vector<Point_plane>
+point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
+             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d)
+{
+  using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
+  const double tolerance = 1e-9;
+  double scale = d;
+  for (const auto& p : positions) scale = (std::max)({scale, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+  auto offset = [&](std::size_t i, const Vector& n) { return (positions[i] - CGAL::ORIGIN) * n; };
+  // Planes in cells of a grid over (normal, offset / scale), 1e-6 wide: a plane's equal lies
+  // in its cell or in one beside it.
+  using Key = std::array<std::int64_t, 4>;
+  auto key = [&](const Vector& n, double c) {
+    return Key{std::llround(n.x() * 1e6), std::llround(n.y() * 1e6), std::llround(n.z() * 1e6),
+               std::llround(c / scale * 1e6)};
+  };
+  std::map<Key, std::vector<std::size_t>> cells;
+  std::vector<Point_plane> planes;
+  std::vector<std::size_t> plane_of(positions.size(), std::size_t(-1));
+  auto same = [&](const Point_plane& a, const Vector& n, double c) {
+    return std::abs(a.normal.x() - n.x()) <= tolerance && std::abs(a.normal.y() - n.y()) <= tolerance &&
+           std::abs(a.normal.z() - n.z()) <= tolerance && std::abs(a.offset - c) <= tolerance * scale;
+  };
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (normals[i] == CGAL::NULL_VECTOR) continue;
+    const Vector n = normals[i] / std::sqrt(normals[i].squared_length());
+    const double c = offset(i, n);
+    const Key k = key(n, c);
+    std::size_t found = std::size_t(-1);
+    for (int m = 0; m < 81 && found == std::size_t(-1); ++m) {
+      Key nk = k;
+      for (int a = 0, r = m; a < 4; ++a, r /= 3) nk[a] += r % 3 - 1;
+      const auto cell = cells.find(nk);
+      if (cell == cells.end()) continue;
+      for (std::size_t j : cell->second)
+        if (same(planes[j], n, c)) found = j;
+    }
+    if (found == std::size_t(-1)) {
+      found = planes.size();
+      planes.push_back(Point_plane{n, c, {}});
+      cells[k].push_back(found);
+    }
+    planes[found].points.push_back(i);
+    plane_of[i] = found;
+  }
+  // The points without a normal join the planes of the points within two cells (2 d wide) of
+  // theirs that they lie on, spreading along crease rows: a plane known near a point it joins
+  // is asked of the points near that one (a face narrower than d may have its points with a
+  // normal only at its ends).
+  using Cell = std::array<std::int64_t, 3>;
+  auto cell_of = [&](std::size_t i) {
+    const auto& p = positions[i];
+    return Cell{std::int64_t(std::floor(p.x() / (2 * d))), std::int64_t(std::floor(p.y() / (2 * d))),
+                std::int64_t(std::floor(p.z() / (2 * d)))};
+  };
+  std::map<Cell, std::vector<std::size_t>> near;     // cell -> planes of its points
+  std::map<Cell, std::vector<std::size_t>> bare;     // cell -> its points without a normal
+  std::vector<std::vector<std::size_t>> joined(positions.size()); // planes of a point without a normal
+  std::vector<Cell> changed;                         // cells whose planes were not yet asked around
+  auto add_near = [&](const Cell& c, std::size_t j) {
+    std::vector<std::size_t>& known = near[c];
+    if (std::find(known.begin(), known.end(), j) != known.end()) return;
+    known.push_back(j);
+    changed.push_back(c);
+  };
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (plane_of[i] != std::size_t(-1)) add_near(cell_of(i), plane_of[i]);
+    else bare[cell_of(i)].push_back(i);
+  }
+  while (!changed.empty()) {
+    const Cell c = changed.back();
+    changed.pop_back();
+    const std::vector<std::size_t> known = near[c];
+    for (int m = 0; m < 125; ++m) {
+      const auto cell = bare.find(Cell{c[0] + m % 5 - 2, c[1] + m / 5 % 5 - 2, c[2] + m / 25 - 2});
+      if (cell == bare.end()) continue;
+      for (std::size_t i : cell->second)
+        for (std::size_t j : known) {
+          if (std::find(joined[i].begin(), joined[i].end(), j) != joined[i].end()) continue;
+          if (!(std::abs(offset(i, planes[j].normal) - planes[j].offset) <= tolerance * scale)) continue;
+          joined[i].push_back(j);
+          planes[j].points.push_back(i);
+          add_near(cell->first, j);
+        }
+    }
+  }
+  return planes;
+}
+
+/// The triangles of the planes of `positions` (point_planes()), oriented by the planes'
+/// outward normals, that lie on the boundary: is_free_at(x) (x a double point) says whether
+/// the sum is free at x. Each plane's points are triangulated in the plane (constrained
+/// Delaunay, the crease rows as constraints); a triangle is kept when its centroid and a
+/// point just inside each of its corners (d / 2^20 from it) are on the plane's face: the sum
+/// is free at d / 2^30 outside the plane and not at d / 2^30 inside. Triangles of nearly
+/// collinear points (area below 1e-10 of their longest edge squared: crease points rounded
+/// off their line) are left out.
+template <class IsFreeAt>
+std::vector<std::array<std::size_t, 3>>
+plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
+                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d,
+                IsFreeAt&& is_free_at)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  struct Point_id { std::size_t i = std::size_t(-1); }; // none: a crossing of two crease rows
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<Point_id, K>;
+  using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+  // x on the plane's face: free just outside (d / 2^30 along the outward normal n), not just
+  // inside. (Nearer than the passages and parts the covering resolves, and far above the
+  // rounding of x; farther, the test would take the plane beyond a crease between two planes
+  // at a small angle for their face.)
+  auto on_face = [&](const K::Point_3& x, const K::Vector_3& n) {
+    const double t = std::ldexp(d, -30);
+    const K::Point_3 out = x + t * n, in = x - t * n;
+    return is_free_at(std::array<double, 3>{out.x(), out.y(), out.z()}) &&
+           !is_free_at(std::array<double, 3>{in.x(), in.y(), in.z()});
+  };
+  std::vector<std::array<std::size_t, 3>> triangles;
+  const std::vector<Point_plane> planes = point_planes(positions, normals, d);
+  std::vector<std::vector<std::size_t>> planes_of(positions.size());
+  for (std::size_t j = 0; j < planes.size(); ++j)
+    for (std::size_t i : planes[j].points) planes_of[i].push_back(j);
+  for (std::size_t j = 0; j < planes.size(); ++j) {
+    const Point_plane& plane = planes[j];
+    if (plane.points.size() < 3) continue;
+    // In the plane: drop the coordinate along which the normal is largest (exact), keeping
+    // the cyclic order, so that a counterclockwise triangle has a normal of that sign there.
+    const K::Vector_3& n = plane.normal;
+    const int drop = std::abs(n.x()) >= std::abs(n.y()) && std::abs(n.x()) >= std::abs(n.z()) ? 0
+                     : std::abs(n.y()) >= std::abs(n.z())                                  ? 1
+                                                                                             : 2;
+    const bool flip = n[drop] < 0;
+    Cdt cdt;
+    std::map<std::size_t, typename Cdt::Vertex_handle> vertex_of;
+    for (std::size_t i : plane.points) {
+      const auto v = cdt.insert(K::Point_2(positions[i][(drop + 1) % 3], positions[i][(drop + 2) % 3]));
+      v->info().i = i;
+      vertex_of[i] = v;
+    }
+    // Crease rows: the points on this plane and another one, in order along their line;
+    // consecutive ones closer than 2 d are joined by a constrained edge, so that both planes'
+    // triangles meet along the row (and none crosses it).
+    std::map<std::size_t, std::vector<std::size_t>> rows; // other plane -> its points here
+    for (std::size_t i : plane.points)
+      for (std::size_t k : planes_of[i])
+        if (k != j) rows[k].push_back(i);
+    for (auto& [k, row] : rows) {
+      const K::Vector_3 along = CGAL::cross_product(n, planes[k].normal);
+      auto at = [&](std::size_t i) { return (positions[i] - CGAL::ORIGIN) * along; };
+      std::sort(row.begin(), row.end(), [&](std::size_t a, std::size_t b) { return at(a) < at(b); });
+      for (std::size_t r = 1; r < row.size(); ++r)
+        if (vertex_of[row[r - 1]] != vertex_of[row[r]] && // (equal points are one vertex)
+            CGAL::squared_distance(positions[row[r - 1]], positions[row[r]]) < 4 * d * d)
+          cdt.insert_constraint(vertex_of[row[r - 1]], vertex_of[row[r]]);
+    }
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      std::array<std::size_t, 3> t = {f->vertex(0)->info().i, f->vertex(1)->info().i, f->vertex(2)->info().i};
+      if (std::count(t.begin(), t.end(), std::size_t(-1))) continue;
+      const K::Point_3 &a = positions[t[0]], &b = positions[t[1]], &c = positions[t[2]];
+      const double area = std::sqrt(CGAL::cross_product(b - a, c - a).squared_length());
+      const double longest =
+        (std::max)({(b - a).squared_length(), (c - b).squared_length(), (a - c).squared_length()});
+      if (!(area > 1e-10 * longest)) continue;
+      // The centroid, then a point just inside the triangle at each corner: a triangle from
+      // a crease point across a face's missing strip (the mouth of a passage whose far lip
+      // has no point) has its centroid on the face, not its corner at that point.
+      const K::Point_3 centroid = CGAL::centroid(a, b, c);
+      auto near_corner = [&](const K::Point_3& v) {
+        const K::Vector_3 u = centroid - v;
+        return v + (std::ldexp(d, -20) / std::sqrt(u.squared_length())) * u;
+      };
+      if (!on_face(centroid, n) || !on_face(near_corner(a), n) || !on_face(near_corner(b), n) ||
+          !on_face(near_corner(c), n))
+        continue;
+      if (flip) std::swap(t[1], t[2]);
+      triangles.push_back(t);
+    }
+  }
+  return triangles;
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_PLANE_TRIANGULATION_H
