@@ -680,6 +680,29 @@ TEST_CASE("mesh of a narrow slot: plane by plane, the passage kept", "[applicati
   }
 }
 
+TEST_CASE("no_face_over_empty_space: chords pass, a lid over a tunnel does not", "[applications][mesh]")
+{
+  using CGAL::Pmsum::internal::no_face_over_empty_space;
+  auto outside_ball = [](const std::array<double, 3>& x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2] > 1; };
+  // an octahedron inscribed in the unit ball (faces inside it), and one twice as large (faces
+  // 2/sqrt(3) - 1 = 0.155 outside it): the ball within d/2 inside for d = 1, not for d = 0.25
+  const Mesh inscribed = to_mesh<Mesh>(octahedron(1)), outer = to_mesh<Mesh>(octahedron(2));
+  CHECK(no_face_over_empty_space(inscribed, 0.01, outside_ball));
+  CHECK(no_face_over_empty_space(outer, 1.0, outside_ball));
+  CHECK_FALSE(no_face_over_empty_space(outer, 0.25, outside_ball));
+  // the unit cube, and the same with a tunnel (0.2, 0.8)^2 along z: the top and bottom faces
+  // close the tunnel's mouths
+  const Mesh cube = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  auto outside_cube = [](const std::array<double, 3>& x) {
+    return !(x[0] > 0 && x[0] < 1 && x[1] > 0 && x[1] < 1 && x[2] > 0 && x[2] < 1);
+  };
+  auto outside_tunnel_block = [&](const std::array<double, 3>& x) {
+    return outside_cube(x) || (x[0] > 0.2 && x[0] < 0.8 && x[1] > 0.2 && x[1] < 0.8);
+  };
+  CHECK(no_face_over_empty_space(cube, 0.1, outside_cube));
+  CHECK_FALSE(no_face_over_empty_space(cube, 0.1, outside_tunnel_block));
+}
+
 TEST_CASE("mesh of an offset: valid, every vertex between the ball's inradius and r from the box",
           "[applications][mesh][offset]")
 {

@@ -253,7 +253,7 @@ TEST_CASE("coarse to fine: every level exact and covering, coarser points reused
       CHECK(exactness_failures(r, ref) == 0);
       CHECK(coverage_distance(ref.boundary_samples(ds[k] / 8), r.points) < ds[k]);
       CHECK(stats[k].output_points == levels[k].size());
-      if (net) CHECK(CGAL::Pmsum::measure_point_spacing(lattice_points(levels[k])) >= ds[k] / 2 * (1 - 1e-9));
+      if (net) CHECK(spacing_of_unfacing(levels[k], ds[k]) >= ds[k] / 2 * (1 - 1e-9));
       std::set<std::tuple<double, double, double>> here;
       for (const auto& p : lattice_points(levels[k])) here.insert({p.x(), p.y(), p.z()});
       // Every coarser lattice point is a point of the finer level again (trim points are

@@ -27,6 +27,7 @@
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -137,27 +138,32 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     for (int way = 0; way < (geometry ? 2 : 1); ++way) {
       const auto t_way = Clock::now();
       std::vector<std::array<std::size_t, 3>> triangles;
+      std::optional<Cd_filter> cd;
       if (way == 0) {
         triangles = advancing_front_triangles(positions, normals);
       } else {
-        Cd_filter cd(geometry);
-        triangles = plane_triangles(positions, normals, dl, [&](const std::array<double, 3>& x) { return cd.is_free_at(x); });
+        cd.emplace(geometry);
+        triangles = plane_triangles(positions, normals, dl, [&](const std::array<double, 3>& x) { return cd->is_free_at(x); });
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                             : std::numeric_limits<double>::infinity();
+      // Plane by plane, the holes left are closed by fill_holes(): never over empty space.
+      const bool across = cd && ms.checks.valid() &&
+                          !no_face_over_empty_space(mesh, dl, [&](const std::array<double, 3>& x) { return cd->is_free_at(x); });
       ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
       ms.refinements = level;
       if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer &&
-          ms.point_distance < dl) {
+          ms.point_distance < dl && !across) {
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
         ms.by_planes = way == 1;
         return;
       }
       failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
-                  (way == 0 ? " by the advancing front " : " plane by plane ") + level_failure(ms, most_outer);
+                  (way == 0 ? " by the advancing front " : " plane by plane ") +
+                  (across ? "closed a hole over empty space" : level_failure(ms, most_outer));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
   }

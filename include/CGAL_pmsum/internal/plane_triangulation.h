@@ -6,13 +6,14 @@
 // one (inside a convolution facet: it has that facet's normal) or on several (on a crease or
 // a trim curve: no normal). The points are grouped by the plane they lie on (the planes of
 // the points that have a normal; a point without one joins every such plane near it that it
-// lies on), each plane's points are triangulated in the plane (2D Delaunay), and a triangle is
-// kept when its centroid is on that plane's face of the boundary: just outside the plane
-// (along its outward normal) the sum is free, just inside it collides (the exact CD test at
-// a point). A triangle never leaves its plane, so it never bridges a narrow passage, the two
-// sides of a thin part or two shells: where the advancing front fails on such sums, this
-// succeeds. Creases come out where the planes' triangles share the crease points; what is
-// left open (a face too thin to hold a point with a normal) is for fill_holes().
+// lies on), each plane's points are triangulated in the plane (constrained 2D Delaunay, the
+// crease rows as constraints), and a triangle is kept when it is on that plane's face of the
+// boundary: just outside the plane (along its outward normal) the sum is free, just inside it
+// collides (the exact CD test at a point). A triangle never leaves its plane, so it never
+// bridges a narrow passage, the two sides of a thin part or two shells. Creases come out
+// where the planes' triangles share the crease points; what is left open (a face too thin to
+// hold a point, the far lip of a passage whose points the net left out) is for fill_holes(),
+// and no_face_over_empty_space() refuses a mesh where that closed a hole over a passage.
 //
 // Grouping by plane compares the points' double normals and offsets within a tolerance of
 // about a billionth of the model's size: it chooses the triangles, it decides nothing about
@@ -231,6 +232,39 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
     }
   }
   return triangles;
+}
+
+/// Is no face of `mesh` over empty space: at its centroid c, is the sum free just outside
+/// (c + t n, t = d / 2^30) and still free at c - t n for every t = d / 2^30, d / 2^24, ...,
+/// d / 2 (inward, no solid within d/2)? Such a face closes a hole over a passage or a
+/// tunnel's mouth. A face of a plane has the solid just inside; one that fill_holes() put
+/// across a convex crease has its centroid inside the solid, across a concave one the solid
+/// within d/2 inside.
+template <class TriangleMesh, class IsFreeAt>
+bool no_face_over_empty_space(const TriangleMesh& mesh, double d, IsFreeAt&& is_free_at)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  auto free_at = [&](const K::Point_3& x) { return is_free_at(std::array<double, 3>{x.x(), x.y(), x.z()}); };
+  for (auto f : faces(mesh)) {
+    std::array<K::Point_3, 3> p;
+    int k = 0;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
+      const auto& x = get(vpm, v);
+      if (k < 3) p[k] = K::Point_3(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+      ++k;
+    }
+    K::Vector_3 n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
+    if (k != 3 || n == CGAL::NULL_VECTOR) return false;
+    n = n / std::sqrt(n.squared_length());
+    const K::Point_3 c = CGAL::centroid(p[0], p[1], p[2]);
+    if (!free_at(c + std::ldexp(d, -30) * n)) continue;
+    bool solid_inside = false;
+    for (int e : {30, 24, 18, 12, 8, 4, 2, 1})
+      if ((solid_inside = !free_at(c - std::ldexp(d, -e) * n))) break;
+    if (!solid_inside) return false;
+  }
+  return true;
 }
 
 } // namespace internal
