@@ -85,14 +85,16 @@ template <class NP = decltype(CGAL::parameters::use_normal_filter(true))>
 std::pair<Result, Result> check_net_and_all(const Soup& P, const Soup& Q, double d, const Reference& ref,
                                             const NP& np = CGAL::parameters::use_normal_filter(true));
 
-/// The smallest distance between two of the lattice points (not trim points) of `records`
-/// that do not face each other (outward normals at most 120 degrees apart): the covering net
-/// keeps facing points, the two walls of a passage, closer than d/2.
+/// The smallest distance between two of the lattice points of `records` inside convolution
+/// facets (vertex + face, edge + edge: one outward normal, the record's) that do not face each
+/// other (normals at most 120 degrees apart): the covering net keeps facing points, the two
+/// walls of a passage, closer than d/2. (A point on a crease has the normals of its pair's
+/// cone, which a record does not give.)
 inline double spacing_of_unfacing(const std::vector<Record>& records, double reach)
 {
   std::vector<const Record*> r;
   for (const Record& x : records)
-    if (!is_trim_point(x)) r.push_back(&x);
+    if (!is_trim_point(x) && x.origin_p.dimension + x.origin_q.dimension == 2) r.push_back(&x);
   std::sort(r.begin(), r.end(), [](const Record* a, const Record* b) { return a->point.x() < b->point.x(); });
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < r.size(); ++i)

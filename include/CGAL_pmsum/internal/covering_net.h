@@ -8,10 +8,11 @@
 // already closer than d/2 to N is covered whatever it is, so it needs no collision test.
 // (Design note: shared/design/covering-net.md.)
 //
-// Facing points: a point does not cover one whose outward normal makes more than 120 degrees
-// with its own (the two walls of a passage narrower than d/2, the two sides of a part thinner
+// Facing points: a point does not cover one when one of its outward normals makes more than
+// 120 degrees with one of the other's (a point on a crease has the normals of its pair's cone) (the two walls of a passage narrower than d/2, the two sides of a part thinner
 // than d/2). Both are kept, closer than d/2 to each other: a reconstruction needs points on
-// both sides, and covering only needs more points. A zero normal (unknown) faces none.
+// both sides, and covering only needs more points. No normal (unknown) faces none. (The two lips
+// of a passage's mouth: normals {up, +x} and {up, -x}.)
 //
 // Distances are computed in double on rounded positions, with a margin that makes both
 // promises hold for the exact points: a candidate counts as covered only if its exact
@@ -33,6 +34,13 @@
 namespace CGAL {
 namespace Pmsum {
 namespace internal {
+
+/// Unit outward normals of a point of the net: `count` from `first` (none: unknown).
+struct Net_normals
+{
+  const Point3* first = nullptr;
+  std::uint32_t count = 0;
+};
 
 class Covering_net
 {
@@ -56,12 +64,20 @@ public:
   /// face each other.
   double spacing() const { return m_d / 2 - 2 * m_margin; }
 
-  /// Do points of unit outward normals a and b (or zero) face each other?
-  static bool facing(const Point3& a, const Point3& b) { return dot(a, b) < -0.5; }
+  using Normals = Net_normals;
+
+  /// Do points of normals a and b face each other (two normals more than 120 degrees apart)?
+  static bool facing(const Normals& a, const Normals& b)
+  {
+    for (std::uint32_t i = 0; i < a.count; ++i)
+      for (std::uint32_t j = 0; j < b.count; ++j)
+        if (dot(a.first[i], b.first[j]) < -0.5) return true;
+    return false;
+  }
 
   /// Is a point of the net that does not face x closer than r <= d/2 to (the exact point
-  /// rounded to) x? `normal`: x's unit outward normal, or zero.
-  bool covers_within(const Point3& x, double r, const Point3& normal = {0, 0, 0}) const
+  /// rounded to) x? `normals`: x's.
+  bool covers_within(const Point3& x, double r, const Normals& normals = {}) const
   {
     const double rr = r - m_margin;
     if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
@@ -79,23 +95,23 @@ public:
       for (std::uint32_t n = first; n != none; n = m_next[n]) {
         const Point3& y = m_points[n];
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-        if (dx * dx + dy * dy + dz * dz < rr * rr && !facing(m_normals[n], normal)) return true;
+        if (dx * dx + dy * dy + dz * dz < rr * rr && !facing(m_normals[n], normals)) return true;
       }
     }
     return false;
   }
 
   /// Is a point of the net that does not face x closer than d/2 to it?
-  bool covers(const Point3& x, const Point3& normal = {0, 0, 0}) const { return covers_within(x, m_d / 2, normal); }
+  bool covers(const Point3& x, const Normals& normals = {}) const { return covers_within(x, m_d / 2, normals); }
 
-  /// Adds x, of unit outward normal `normal` (or zero), to the net (the caller has checked
-  /// that it is not covered).
-  void insert(const Point3& x, const Point3& normal = {0, 0, 0})
+  /// Adds x, of outward `normals`, to the net (the caller has checked that it is not
+  /// covered); the normals must outlive the net.
+  void insert(const Point3& x, const Normals& normals = {})
   {
     if (!m_enabled) return;
     std::uint32_t& last = m_cells.at(key(cell_of(x)));
     m_points.push_back(x);
-    m_normals.push_back(normal);
+    m_normals.push_back(normals);
     m_next.push_back(last);
     last = std::uint32_t(m_points.size() - 1);
   }
@@ -171,7 +187,8 @@ private:
   double m_d, m_scale, m_margin, m_cell;
   bool m_enabled;
   Cell_table m_cells;
-  std::vector<Point3> m_points, m_normals;
+  std::vector<Point3> m_points;
+  std::vector<Normals> m_normals;
   std::vector<std::uint32_t> m_next; // previous point of the same cell
 };
 

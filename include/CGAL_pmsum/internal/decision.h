@@ -135,13 +135,11 @@ struct Decision_context
   bool islands = true;                 // and the islands inside lattice cells (island_search.h)
   double d = 0;                        // the covering distance
 
-  /// The unit outward normal of direction k (zero if k is not a direction or unknown).
-  Point3 normal(std::uint32_t k) const
-  { return normals && k < normals->size() ? (*normals)[k] : Point3{0, 0, 0}; }
-  /// The normal of the points of pair fp before they are tested: its facet's (zero for a
-  /// pair with a cone of directions).
-  Point3 normal(const Feature_pair& fp) const
-  { return fp.number_of_directions == 1 ? normal(fp.first_direction) : Point3{0, 0, 0}; }
+  /// The unit outward normals of the directions of pair fp (none if unknown): those of the
+  /// pair's points, for the net.
+  Covering_net::Normals normals_of(const Feature_pair& fp) const
+  { return normals ? Covering_net::Normals{normals->data() + fp.first_direction, fp.number_of_directions}
+                   : Covering_net::Normals{}; }
 };
 
 /// The outcome of one pair's decisions.
@@ -220,7 +218,7 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     if (certified) info.leaf = c.octree->certified_leaf(*certified);
     else if (k == Corner::inside) info.witness = filter->last_crossing();
   };
-  const Point3 normal = c.normal(fp);
+  const Covering_net::Normals normals = c.normals_of(fp);
   candidates.for_each([&](std::size_t ip, std::size_t iq) {
     const Sample &p = candidates.p(ip), &q = candidates.q(iq);
     const Point3 x = positions ? candidates.position(ip, iq) : Point3{};
@@ -234,13 +232,13 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     if (decision == untested && c.octree && c.octree->certified(x)) {
       ++counters.certified;
       // What the trim search knows must not depend on the octree: as if tested below.
-      if (!kept && c.net && c.net->covers(x, normal)) known(ip, iq, Corner::covered);
-      else if (kept || !own || !own->covers(x, normal)) known(ip, iq, Corner::inside, &x);
+      if (!kept && c.net && c.net->covers(x, normals)) known(ip, iq, Corner::covered);
+      else if (kept || !own || !own->covers(x, normals)) known(ip, iq, Corner::inside, &x);
       return;
     }
     if (decision == inner) { known(ip, iq, Corner::inside, nullptr); return; }
-    if (!kept && c.net && c.net->covers(x, normal)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
-    if (!kept && own && own->covers(x, normal)) { out.tentative.push_back({p, q, x, untested, false}); return; }
+    if (!kept && c.net && c.net->covers(x, normals)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
+    if (!kept && own && own->covers(x, normals)) { out.tentative.push_back({p, q, x, untested, false}); return; }
     if (decision == untested) {
       decision = cd_decision(*filter, *c.pairs, fp, p, q);
       if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), decision);
@@ -250,7 +248,7 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     out.tentative.push_back({p, q, x, decision, kept});
     if (c.net) {
       if (!own) own.emplace(c.net->empty_like());
-      own->insert(x, c.normal(decision));
+      own->insert(x, normals);
     }
   });
   if (lattice) trim_search(c, fp, *lattice, corners, *filter, out, counters);
@@ -267,7 +265,7 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
     Corner_info& info = corners[k];
     if (lattice.is_own_candidate(k) || info.status != Corner::unknown) return info;
     const Point3 x = lattice.position(k, P, Q);
-    if (c.net && c.net->covers(x, c.normal(fp))) { info.status = Corner::covered; return info; }
+    if (c.net && c.net->covers(x, c.normals_of(fp))) { info.status = Corner::covered; return info; }
     if (c.octree && (info.leaf = c.octree->certified_leaf(x))) { info.status = Corner::inside; return info; }
     ++counters.corner_tests;
     const bool inside = cd_decision(filter, *c.pairs, fp, lattice.p(k), lattice.q(k)) == inner;
@@ -305,9 +303,9 @@ void commit_piece(const Decision_context& c, std::size_t i, Pair_decision& decid
   const Feature_pair& fp = c.pairs->pairs[i];
   if (cache)
     for (const auto& [key, decision] : decided.tested) cache->add(key, decision);
-  const Point3 normal = c.normal(fp);
+  const Covering_net::Normals normals = c.normals_of(fp);
   for (Tentative& t : decided.tentative) {
-    if (!t.kept && net && net->covers(t.x, normal)) {
+    if (!t.kept && net && net->covers(t.x, normals)) {
       counters.covered += (t.direction == untested);
       continue;
     }
@@ -317,12 +315,12 @@ void commit_piece(const Decision_context& c, std::size_t i, Pair_decision& decid
       if (cache) cache->add(Decision_cache::Key::of(i, t.p, t.q), t.direction);
       if (t.direction == inner) continue;
     }
-    if (net) net->insert(t.x, c.normal(t.direction));
+    if (net) net->insert(t.x, normals);
     emit(t);
   }
   for (const Trim_point& t : decided.trims) {
-    if (net && net->covers_within(t.x, t.radius, c.normal(t.direction))) continue;
-    if (net) net->insert(t.x, c.normal(t.direction));
+    if (net && net->covers_within(t.x, t.radius, normals)) continue;
+    if (net) net->insert(t.x, normals);
     emit(t);
   }
 }

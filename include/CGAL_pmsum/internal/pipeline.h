@@ -224,7 +224,10 @@ public:
     };
     // Coarse to fine: the coarser level's points (at least d/2 apart) come first.
     for (const Tentative& t : m_output) {
-      net->insert(t.x, m_normals[t.direction]);
+      // (the normals of its pair: the one whose directions hold t's)
+      const auto fp = std::upper_bound(pairs.pairs.begin(), pairs.pairs.end(), t.direction,
+                                       [](std::uint32_t k, const Feature_pair& f) { return k < f.first_direction; }) - 1;
+      net->insert(t.x, Covering_net::Normals{m_normals.data() + fp->first_direction, fp->number_of_directions});
       output_point(t);
     }
     Decision_context context{&pairs, &sp, &sq};
