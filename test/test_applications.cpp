@@ -643,16 +643,19 @@ TEST_CASE("mesh of a thin part: the advancing front, or plane by plane", "[appli
                                  CGAL::parameters::mesh_statistics(ms));
   CHECK(CGAL::Pmsum::check_mesh(m).valid());
   CHECK(ms.checks.shells == 1);
-  // a plate 0.02 thick (sum 0.04) at d = 0.4, thinner than the spacing at d/4 (0.05) too: the
-  // advancing front fails at every d; plane by plane, the box itself, its volume exact
+  // a plate 0.02 thick (sum 0.04) at d = 0.4, thinner than the spacing at d/4 (0.05) too: both
+  // sides keep their points (the net lets no point cover one facing it), and it is meshed; its
+  // volume is at most the box's (every point of the mesh's solid is in the hull of its vertices,
+  // on the box), less the chords cut along the rims
   Mesh thin;
   CGAL::point_minkowski_sum_mesh(to_mesh<Mesh>(box({0, 0, 0}, {2, 2, 0.02})), Q, 0.4, thin,
                                  CGAL::parameters::mesh_statistics(ms));
   REQUIRE(CGAL::Pmsum::check_mesh(thin).valid());
-  CHECK(ms.by_planes);
   CHECK(ms.checks.shells == 1);
   CHECK(ms.point_distance < ms.covering_distance);
-  CHECK(CGAL::Polygon_mesh_processing::volume(thin) == Approx(2.02 * 2.02 * 0.04).epsilon(1e-9));
+  const double volume = CGAL::Polygon_mesh_processing::volume(thin), box_volume = 2.02 * 2.02 * 0.04;
+  CHECK(volume <= box_volume * (1 + 1e-9));
+  CHECK(volume > 0.9 * box_volume);
 }
 
 TEST_CASE("mesh that cannot be made: an error, and no mesh", "[applications][mesh]")
