@@ -139,18 +139,18 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       const auto t_way = Clock::now();
       std::vector<std::array<std::size_t, 3>> triangles;
       std::optional<Cd_filter> cd;
+      auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
         triangles = advancing_front_triangles(positions, normals);
       } else {
         cd.emplace(geometry);
-        triangles = plane_triangles(positions, normals, dl, [&](const std::array<double, 3>& x) { return cd->is_free_at(x); });
+        triangles = plane_triangles(positions, normals, dl, free_at);
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                             : std::numeric_limits<double>::infinity();
       // Plane by plane, the holes left are closed by fill_holes(): never over empty space.
-      const bool across = cd && ms.checks.valid() &&
-                          !no_face_over_empty_space(mesh, dl, [&](const std::array<double, 3>& x) { return cd->is_free_at(x); });
+      const bool across = cd && ms.checks.valid() && !no_face_over_empty_space(mesh, dl, free_at);
       ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
       ms.refinements = level;
