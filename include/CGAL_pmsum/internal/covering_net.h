@@ -9,10 +9,11 @@
 // (Design note: shared/design/covering-net.md.)
 //
 // Facing points: a point does not cover one when one of its outward normals makes more than
-// 120 degrees with one of the other's (a point on a crease has the normals of its pair's cone) (the two walls of a passage narrower than d/2, the two sides of a part thinner
-// than d/2). Both are kept, closer than d/2 to each other: a reconstruction needs points on
-// both sides, and covering only needs more points. No normal (unknown) faces none. (The two lips
-// of a passage's mouth: normals {up, +x} and {up, -x}.)
+// 120 degrees with one of the other's (a point on a crease has the normals of its pair's
+// cone): the two walls of a passage narrower than d/2, the two sides of a part thinner than
+// d/2, the two lips of a passage's mouth (normals {up, +x} and {up, -x}). Both are kept,
+// closer than d/2 to each other: a reconstruction needs points on both sides, and covering
+// only needs more points. No normal (unknown) faces none.
 //
 // Distances are computed in double on rounded positions, with a margin that makes both
 // promises hold for the exact points: a candidate counts as covered only if its exact
