@@ -119,13 +119,14 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     const double dl = d / double(1 << level);
     const auto t_sum = Clock::now();
     std::vector<Point> points;
-    std::vector<Epick::Vector_3> normals;
+    std::vector<Epick::Vector_3> normals, face_normals; // (face_normals: of a face through the point)
     stats = Statistics();
     pipeline.run_level(dl, stats, [&](const Sample& sp, const Sample& sq, const Direction& direction, const Trim* trim) {
       points.emplace_back(output_point<GT>(mp, mq, sp, sq, trim));
       // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is given.
+      face_normals.push_back(output_normal<Epick>(mp, mq, direction));
       if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
-      else normals.push_back(output_normal<Epick>(mp, mq, direction));
+      else normals.push_back(face_normals.back());
     }, start);
     start = Clock::now();
     ms.sum = stats;
@@ -139,18 +140,21 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       const auto t_way = Clock::now();
       std::vector<std::array<std::size_t, 3>> triangles;
       std::optional<Cd_filter> cd;
+      std::optional<Face_cover> cover;
       auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
         triangles = advancing_front_triangles(positions, normals);
       } else {
         cd.emplace(geometry);
-        triangles = plane_triangles(positions, normals, dl, free_at);
+        cover.emplace(pipeline.pairs(), mp, mq);
+        triangles = plane_triangles(positions, normals, face_normals, dl, free_at, *cover);
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                             : std::numeric_limits<double>::infinity();
       // Plane by plane, the holes left are closed by fill_holes(): never over empty space.
-      const bool across = cd && ms.checks.valid() && !no_face_over_empty_space(mesh, dl, free_at);
+      const bool across = cd && ms.checks.valid() &&
+                          (!no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover));
       ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
       ms.refinements = level;

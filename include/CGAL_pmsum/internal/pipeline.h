@@ -132,6 +132,8 @@ public:
 
   /// The meshes and trees of the CD filter; null if the pipeline has none (use_cd_filter false).
   const Cd_geometry* geometry() const { return m_geometry ? &*m_geometry : nullptr; }
+  /// The feature pairs the normal filter kept (once for all levels).
+  const Candidate_pairs& pairs() const { return m_pairs; }
 
   /// `coarse_to_fine`: keep each level's decisions for the next, finer one.
   Pipeline(const Mesh_data& mp, const Mesh_data& mq, const Pipeline_options& o, bool coarse_to_fine = false)

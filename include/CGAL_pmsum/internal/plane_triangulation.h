@@ -4,16 +4,20 @@
 // The mesh stage's second way of joining the output points into triangles: plane by plane.
 // The boundary of a sum of polyhedra is made of planar faces, and every output point lies on
 // one (inside a convolution facet: it has that facet's normal) or on several (on a crease or
-// a trim curve: no normal). The points are grouped by the plane they lie on (the planes of
-// the points that have a normal; a point without one joins every such plane near it that it
-// lies on), each plane's points are triangulated in the plane (constrained 2D Delaunay, the
-// crease rows as constraints), and a triangle is kept when it is on that plane's face of the
-// boundary: just outside the plane (along its outward normal) the sum is free, just inside it
-// collides (the exact CD test at a point). A triangle never leaves its plane, so it never
-// bridges a narrow passage, the two sides of a thin part or two shells. Creases come out
+// a trim curve: no normal). The points are grouped by the plane they lie on (the plane of
+// the convolution facet each point was decided on; a point without a normal also joins every
+// plane near it that it lies on), each plane's points are triangulated in the plane
+// (constrained 2D Delaunay, the crease rows as constraints), and a triangle is kept when it
+// is on that plane's face of the boundary: just outside the plane (along its outward normal)
+// the sum is free, just inside it collides (the exact CD test at a point), and the whole
+// triangle lies in the union of the plane's convolution facets (face_cover.h: no hole of
+// the face smaller than the points' spacing, such as a tunnel's mouth, under it). A
+// triangle never leaves its plane, so it never bridges a narrow passage, the two sides of
+// a thin part or two shells. Creases come out
 // where the planes' triangles share the crease points; what is left open (a face too thin to
 // hold a point, the far lip of a passage whose points the net left out) is for fill_holes(),
-// and no_face_over_empty_space() refuses a mesh where that closed a hole over a passage.
+// and no_face_over_empty_space() and no_face_over_hole() refuse a mesh where that closed a
+// hole over a passage or over a face's hole.
 //
 // Grouping by plane compares the points' double normals and offsets within a tolerance of
 // about a billionth of the model's size: it chooses the triangles, it decides nothing about
@@ -21,6 +25,8 @@
 
 #ifndef CGAL_PMSUM_INTERNAL_PLANE_TRIANGULATION_H
 #define CGAL_PMSUM_INTERNAL_PLANE_TRIANGULATION_H
+
+#include <CGAL_pmsum/internal/face_cover.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -47,13 +53,15 @@ struct Point_plane
   std::vector<std::size_t> points;
 };
 
-/// Groups `positions` by plane: one plane per distinct (normal, offset) of the points with a
-/// normal (equal within `tolerance`, relative to 1 for the normal and to `scale` for the
-/// offset); a point without a normal joins the planes of the points within 2 d of it that it
-/// lies on (within tolerance * scale), and so on along crease rows.
+/// Groups `positions` by plane: one plane per distinct (face normal, offset) of the points
+/// (`face_normals`: the normal of the convolution facet a point was decided on; equal within
+/// `tolerance`, relative to 1 for the normal and to `scale` for the offset); a point without
+/// a normal (`normals`: null on creases and trim curves) also joins the planes of the points
+/// within 2 d of it that it lies on (within tolerance * scale), and so on along crease rows.
 inline std::vector<Point_plane>
 point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d)
+             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& face_normals, double d)
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
   const double tolerance = 1e-9;
@@ -75,8 +83,7 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
            std::abs(a.normal.z() - n.z()) <= tolerance && std::abs(a.offset - c) <= tolerance * scale;
   };
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    if (normals[i] == CGAL::NULL_VECTOR) continue;
-    const Vector n = normals[i] / std::sqrt(normals[i].squared_length());
+    const Vector n = face_normals[i] / std::sqrt(face_normals[i].squared_length());
     const double c = offset(i, n);
     const Key k = key(n, c);
     std::size_t found = std::size_t(-1);
@@ -117,8 +124,11 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
     changed.push_back(c);
   };
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    if (plane_of[i] != std::size_t(-1)) add_near(cell_of(i), plane_of[i]);
-    else bare[cell_of(i)].push_back(i);
+    add_near(cell_of(i), plane_of[i]);
+    if (normals[i] == CGAL::NULL_VECTOR) {
+      bare[cell_of(i)].push_back(i);
+      joined[i].push_back(plane_of[i]);
+    }
   }
   while (!changed.empty()) {
     const Cell c = changed.back();
@@ -145,14 +155,17 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
 /// the sum is free at x. Each plane's points are triangulated in the plane (constrained
 /// Delaunay, the crease rows as constraints); a triangle is kept when its centroid and a
 /// point just inside each of its corners (d / 2^20 from it) are on the plane's face: the sum
-/// is free at d / 2^30 outside the plane and not at d / 2^30 inside. Triangles of nearly
+/// is free at d / 2^30 outside the plane and not at d / 2^30 inside, and the triangle (its
+/// corners d / 2^20 inwards) lies in the union of the plane's convolution facets (`cover`).
+/// Triangles of nearly
 /// collinear points (area below 1e-10 of their longest edge squared: crease points rounded
 /// off their line) are left out.
 template <class IsFreeAt>
 std::vector<std::array<std::size_t, 3>>
 plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d,
-                IsFreeAt&& is_free_at)
+                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& face_normals, double d,
+                IsFreeAt&& is_free_at, Face_cover& cover)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   struct Point_id { std::size_t i = std::size_t(-1); }; // none: a crossing of two crease rows
@@ -170,8 +183,9 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
     return is_free_at(std::array<double, 3>{out.x(), out.y(), out.z()}) &&
            !is_free_at(std::array<double, 3>{in.x(), in.y(), in.z()});
   };
+  auto coordinates = [](const K::Point_3& x) { return std::array<double, 3>{x.x(), x.y(), x.z()}; };
   std::vector<std::array<std::size_t, 3>> triangles;
-  const std::vector<Point_plane> planes = point_planes(positions, normals, d);
+  const std::vector<Point_plane> planes = point_planes(positions, normals, face_normals, d);
   std::vector<std::vector<std::size_t>> planes_of(positions.size());
   for (std::size_t j = 0; j < planes.size(); ++j)
     for (std::size_t i : planes[j].points) planes_of[i].push_back(j);
@@ -185,6 +199,7 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
                      : std::abs(n.y()) >= std::abs(n.z())                                  ? 1
                                                                                              : 2;
     const bool flip = n[drop] < 0;
+    cover.set_plane({n.x(), n.y(), n.z()}, plane.offset, drop);
     Cdt cdt;
     std::map<std::size_t, typename Cdt::Vertex_handle> vertex_of;
     for (std::size_t i : plane.points) {
@@ -225,7 +240,7 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
         return v + (std::ldexp(d, -20) / std::sqrt(u.squared_length())) * u;
       };
       if (!on_face(centroid, n) || !on_face(near_corner(a), n) || !on_face(near_corner(b), n) ||
-          !on_face(near_corner(c), n))
+          !on_face(near_corner(c), n) || !cover.covers({coordinates(a), coordinates(b), coordinates(c)}, std::ldexp(d, -20)))
         continue;
       if (flip) std::swap(t[1], t[2]);
       triangles.push_back(t);
@@ -263,6 +278,42 @@ bool no_face_over_empty_space(const TriangleMesh& mesh, double d, IsFreeAt&& is_
     for (int e : {30, 24, 18, 12, 8, 4, 2, 1})
       if ((solid_inside = !free_at(c - std::ldexp(d, -e) * n))) break;
     if (!solid_inside) return false;
+  }
+  return true;
+}
+
+/// Does every face of `mesh` that lies in the plane of some convolution facets lie in their
+/// union (Face_cover::covers(), corners moved d / 2^20 inwards)? A face that fill_holes() put
+/// over a hole in a face, such as the mouth of a tunnel narrower than the points' spacing,
+/// does not, while every point test on it can land on the face.
+template <class TriangleMesh>
+bool no_face_over_hole(const TriangleMesh& mesh, double d, Face_cover& cover)
+{
+  using Corners = std::array<std::array<double, 3>, 3>;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::map<std::array<std::int64_t, 4>, std::vector<std::pair<Corners, std::array<double, 4>>>> by_plane;
+  for (auto f : faces(mesh)) {
+    Corners x;
+    int k = 0;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
+      const auto& p = get(vpm, v);
+      if (k < 3) x[k] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      ++k;
+    }
+    Vec3<double> n = cross(x[1] - x[0], x[2] - x[0]);
+    const double length = std::sqrt(dot(n, n));
+    if (k != 3 || !(length > 0)) return false;
+    n = scaled(n, 1 / length);
+    const double c = dot(n, x[0]);
+    by_plane[{std::llround(n[0] * 1e6), std::llround(n[1] * 1e6), std::llround(n[2] * 1e6), std::llround(c * 1e6)}]
+      .emplace_back(x, std::array<double, 4>{n[0], n[1], n[2], c});
+  }
+  for (const auto& [key, plane_faces] : by_plane) {
+    const auto& [n0, n1, n2, c] = plane_faces.front().second;
+    const int drop = std::abs(n0) >= std::abs(n1) && std::abs(n0) >= std::abs(n2) ? 0 : std::abs(n1) >= std::abs(n2) ? 1 : 2;
+    cover.set_plane({n0, n1, n2}, c, drop);
+    for (const auto& face : plane_faces)
+      if (!cover.covers(face.first, std::ldexp(d, -20))) return false;
   }
   return true;
 }

@@ -1,0 +1,260 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The plane-by-plane mesher's test that a whole triangle, not only points of it, lies on a
+// face of the sum (plane_triangulation.h).
+//
+// Every point of a face of the boundary with normal n lies on a convolution facet of the
+// candidate pairs in the face's plane (the boundary is in the convolution, the normal filter
+// never drops a boundary point, and the other facets meet the plane in segments only). So a
+// triangle of the face lies in the union S of the plane's convolution facets (triangles v + t
+// and t + w, parallelograms e + f: convex polygons). The converse fails (S has hidden parts),
+// which is why the mesher also tests points with the CD filter; what this test adds is what
+// points cannot see: a hole of S inside the triangle smaller than the points' spacing, such as
+// the mouth of a tunnel 1/2000 wide in a face sampled at d. A triangle meets no hole of S and
+// no outer border of S if no piece of the border of S meets it (and it has a point in S,
+// which the CD test at its centroid shows). The border pieces are computed exactly: the
+// stretches of the facets' edges not covered on their outer side by another facet of the
+// plane (Epeck, in the plane's projection along an axis).
+
+#ifndef CGAL_PMSUM_INTERNAL_FACE_COVER_H
+#define CGAL_PMSUM_INTERNAL_FACE_COVER_H
+
+#include <CGAL_pmsum/internal/normal_filter.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// The convolution facets of the 2-dimensional candidate pairs, found by plane; for one
+/// plane at a time (set_plane()), whether a triangle of it lies in their union (covers()).
+class Face_cover
+{
+public:
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+  Face_cover(const Candidate_pairs& pairs, const Mesh_data& mp, const Mesh_data& mq) : m_p(mp), m_q(mq)
+  {
+    for (const Feature_pair& pair : pairs.pairs) {
+      if (pair.p.dimension + pair.q.dimension != 2) continue;
+      const std::vector<std::array<double, 3>> corners = facet_corners(pair);
+      const Vec3<double> n = cross(corners[1] - corners[0], corners[2] - corners[0]);
+      const double length = std::sqrt(dot(n, n));
+      if (!(length > 0)) continue;
+      for (double sign : {1., -1.}) { // both sides: a facet is looked up by its plane
+        const Vec3<double> u = scaled(n, sign / length);
+        m_by_plane.emplace(key(u, dot(u, corners[0])), m_facets.size());
+      }
+      m_facets.push_back(pair);
+      for (const auto& c : corners)
+        for (double x : c) m_scale = (std::max)(m_scale, std::abs(x));
+    }
+  }
+
+  /// Selects the facets in the plane of unit normal n (up to its sign) and offset c (equal
+  /// within 1e-9, relative to 1 for the normal and to the model's size for the offset),
+  /// seen along coordinate axis `drop`, and computes the border of their union.
+  void set_plane(const std::array<double, 3>& n, double c, int drop)
+  {
+    m_drop = drop;
+    m_polygons.clear();
+    m_border.clear();
+    std::vector<std::size_t> chosen;
+    const Key k = key(n, c);
+    for (int m = 0; m < 81; ++m) {
+      Key nk = k;
+      for (int a = 0, r = m; a < 4; ++a, r /= 3) nk[a] += r % 3 - 1;
+      const auto range = m_by_plane.equal_range(nk);
+      for (auto it = range.first; it != range.second; ++it) chosen.push_back(it->second);
+    }
+    std::sort(chosen.begin(), chosen.end());
+    chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+    for (std::size_t f : chosen) {
+      const auto corners = facet_corners(m_facets[f]);
+      const Vec3<double> m = cross(corners[1] - corners[0], corners[2] - corners[0]);
+      const Vec3<double> u = scaled(m, 1 / std::sqrt(dot(m, m)));
+      const double s = dot(u, Vec3<double>{n[0], n[1], n[2]}) >= 0 ? 1 : -1;
+      const double tolerance = 1e-9;
+      bool same = std::abs(s * dot(u, corners[0]) - c) <= tolerance * m_scale;
+      for (int a = 0; a < 3; ++a) same &= std::abs(s * u[a] - n[a]) <= tolerance;
+      if (same) add_polygon(f);
+    }
+    compute_border();
+  }
+
+  /// Does the triangle with these corners, each moved `inset` towards its centroid (beyond
+  /// the rounding of its corners), projected along the plane's axis, meet no piece of the
+  /// border of the union of the plane's facets? (Then, if one of its points is in the union,
+  /// all of it is.)
+  bool covers(const std::array<std::array<double, 3>, 3>& corners, double inset) const
+  {
+    std::array<EK::Point_2, 3> t;
+    for (int k = 0; k < 3; ++k) {
+      double u[2], length = 0;
+      for (int a = 0; a < 2; ++a) {
+        const int c = (m_drop + 1 + a) % 3;
+        u[a] = (corners[0][c] + corners[1][c] + corners[2][c]) / 3 - corners[k][c];
+        length += u[a] * u[a];
+      }
+      length = std::sqrt(length);
+      if (!(length > 0)) return false;
+      t[k] = EK::Point_2(corners[k][(m_drop + 1) % 3] + inset / length * u[0],
+                         corners[k][(m_drop + 2) % 3] + inset / length * u[1]);
+    }
+    const EK::Triangle_2 triangle(t[0], t[1], t[2]);
+    const CGAL::Bbox_2 box = triangle.bbox();
+    for (const auto& [piece, piece_box] : m_border)
+      if (CGAL::do_overlap(box, piece_box) && CGAL::do_intersect(piece, triangle)) return false;
+    return true;
+  }
+
+private:
+  using Key = std::array<std::int64_t, 4>;
+  using Polygon = std::vector<EK::Point_2>; // convex, counterclockwise
+
+  static Key key(const Vec3<double>& u, double c)
+  { return Key{std::llround(u[0] * 1e6), std::llround(u[1] * 1e6), std::llround(u[2] * 1e6), std::llround(c * 1e3)}; }
+
+  /// The corners of the convolution facet of `pair` in cyclic order (rounded sums p + q).
+  std::vector<std::array<double, 3>> facet_corners(const Feature_pair& pair) const
+  {
+    std::vector<std::array<double, 3>> out;
+    for (const auto& [i, j] : corner_indices(pair)) out.push_back(m_p.points[i] + m_q.points[j]);
+    return out;
+  }
+
+  /// The (vertex of P, vertex of Q) of each corner of the facet of `pair`, in cyclic order.
+  std::vector<std::pair<Index, Index>> corner_indices(const Feature_pair& pair) const
+  {
+    std::vector<std::pair<Index, Index>> out;
+    if (pair.p.dimension == 0)
+      for (Index w : m_q.triangles[pair.q.index]) out.emplace_back(pair.p.index, w);
+    else if (pair.q.dimension == 0)
+      for (Index v : m_p.triangles[pair.p.index]) out.emplace_back(v, pair.q.index);
+    else {
+      const auto& a = m_p.edges[pair.p.index].v;
+      const auto& b = m_q.edges[pair.q.index].v;
+      out = {{a[0], b[0]}, {a[1], b[0]}, {a[1], b[1]}, {a[0], b[1]}};
+    }
+    return out;
+  }
+
+  /// The facet's projection, exactly (each coordinate the exact sum p + q), counterclockwise;
+  /// none if it projects to a segment.
+  void add_polygon(std::size_t f)
+  {
+    Polygon polygon;
+    for (const auto& [i, j] : corner_indices(m_facets[f])) {
+      auto coordinate = [&](int a) { return EK::FT(m_p.points[i][a]) + EK::FT(m_q.points[j][a]); };
+      polygon.emplace_back(coordinate((m_drop + 1) % 3), coordinate((m_drop + 2) % 3));
+    }
+    const CGAL::Orientation o = CGAL::orientation(polygon[0], polygon[1], polygon[2]);
+    if (o == CGAL::COLLINEAR) return;
+    if (o == CGAL::CLOCKWISE) std::reverse(polygon.begin(), polygon.end());
+    m_polygons.push_back(std::move(polygon));
+  }
+
+  /// The border of the union: the stretches of each polygon's edges (the polygon on their
+  /// left) whose right side no other polygon covers.
+  void compute_border()
+  {
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+    std::vector<Box> edges, polygons;
+    std::vector<std::pair<std::size_t, std::size_t>> edge_ids; // (polygon, corner)
+    for (std::size_t g = 0; g < m_polygons.size(); ++g) {
+      CGAL::Bbox_2 box;
+      for (std::size_t k = 0; k < m_polygons[g].size(); ++k) {
+        const EK::Point_2 &a = m_polygons[g][k], &b = m_polygons[g][(k + 1) % m_polygons[g].size()];
+        const CGAL::Bbox_2 e = a.bbox() + b.bbox();
+        edges.emplace_back(e, edge_ids.size());
+        edge_ids.emplace_back(g, k);
+        box += e;
+      }
+      polygons.emplace_back(box, g);
+    }
+    std::vector<std::vector<std::size_t>> near(edge_ids.size()); // edge -> polygons near it
+    CGAL::box_intersection_d(edges.begin(), edges.end(), polygons.begin(), polygons.end(),
+                             [&](const Box& e, const Box& g) {
+                               if (g.info() != edge_ids[e.info()].first) near[e.info()].push_back(g.info());
+                             });
+    for (std::size_t e = 0; e < edge_ids.size(); ++e) {
+      const Polygon& own = m_polygons[edge_ids[e].first];
+      const EK::Point_2 &a = own[edge_ids[e].second], &b = own[(edge_ids[e].second + 1) % own.size()];
+      std::vector<std::pair<EK::FT, EK::FT>> covered; // parameters along a -> b
+      for (std::size_t g : near[e]) right_cover(a, b, m_polygons[g], covered);
+      std::sort(covered.begin(), covered.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      EK::FT reached = 0; // [0, reached] covered, or a piece of border ends there
+      for (const auto& [from, to] : covered) {
+        if (!(reached < 1)) break;
+        if (reached < from) add_piece(a, b, reached, (CGAL::min)(from, EK::FT(1)));
+        if (reached < to) reached = to;
+      }
+      if (reached < 1) add_piece(a, b, reached, 1);
+    }
+  }
+
+  /// The parameters along a -> b of the stretch of that line whose right side polygon g
+  /// covers (through g's interior, or along an edge of g with g on the right), if any.
+  static void right_cover(const EK::Point_2& a, const EK::Point_2& b, const Polygon& g,
+                          std::vector<std::pair<EK::FT, EK::FT>>& covered)
+  {
+    const EK::Vector_2 ab = b - a;
+    auto area = [&](const EK::Point_2& x) { return ab.x() * (x.y() - a.y()) - ab.y() * (x.x() - a.x()); };
+    auto along = [&](const EK::Point_2& x) { return ((x - a) * ab) / ab.squared_length(); };
+    std::vector<EK::FT> s;
+    bool right = false, left = false;
+    int on = 0;
+    for (const EK::Point_2& x : g) {
+      s.push_back(area(x));
+      const CGAL::Sign sign = CGAL::sign(s.back());
+      right |= sign == CGAL::NEGATIVE;
+      left |= sign == CGAL::POSITIVE;
+      on += sign == CGAL::ZERO;
+    }
+    if (!right || (!left && on < 2)) return;
+    std::vector<EK::FT> at; // where the line meets g's border
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      const std::size_t l = (k + 1) % g.size();
+      if (CGAL::sign(s[k]) == CGAL::ZERO) at.push_back(along(g[k]));
+      else if (CGAL::sign(s[k]) * CGAL::sign(s[l]) == CGAL::NEGATIVE)
+        at.push_back(along(g[k] + (s[k] / (s[k] - s[l])) * (g[l] - g[k])));
+    }
+    const auto [lo, hi] = std::minmax_element(at.begin(), at.end());
+    if (*lo < *hi) covered.emplace_back(*lo, *hi);
+  }
+
+  void add_piece(const EK::Point_2& a, const EK::Point_2& b, const EK::FT& from, const EK::FT& to)
+  {
+    if (!(from < to) || !(to > 0)) return;
+    const EK::FT f = (CGAL::max)(from, EK::FT(0));
+    const EK::Segment_2 piece(a + f * (b - a), a + to * (b - a));
+    m_border.emplace_back(piece, piece.bbox());
+  }
+
+  const Mesh_data& m_p;
+  const Mesh_data& m_q;
+  std::vector<Feature_pair> m_facets;
+  std::multimap<Key, std::size_t> m_by_plane;
+  double m_scale = 0;
+  int m_drop = 2;
+  std::vector<Polygon> m_polygons;
+  std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>> m_border;
+};
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_FACE_COVER_H
