@@ -603,11 +603,10 @@ TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", 
   CHECK(faces(tiny).size() == 12);
 }
 
-// Known limit (issue 15 open): the reconstruction leaves holes on this box with a box-shaped
-// void at every refinement, so point_minkowski_sum_mesh() throws. Marked as expected to fail:
-// when it starts to pass, Catch reports it, and the mark must go.
+// The advancing front leaves holes on this box with a box-shaped void; plane by plane meshes
+// it (every point joins the planes it lies on, so the void's edges have their rows on both faces).
 TEST_CASE("mesh of a sum with a void: two shells, the void inward, within d of the exact boundary",
-          "[applications][mesh][!shouldfail]")
+          "[applications][mesh]")
 {
   // ([0, 3]^3 minus (1, 2)^3) + [0, 0.25]^3: the box [0, 3.25]^3 with the void (1.25, 2)^3
   Mesh P = to_mesh<Mesh>(box({0, 0, 0}, {3, 3, 3}));

@@ -147,7 +147,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       } else {
         cd.emplace(geometry);
         cover.emplace(pipeline.pairs(), mp, mq);
-        triangles = plane_triangles(positions, normals, face_normals, dl, free_at, *cover);
+        triangles = plane_triangles(positions, face_normals, dl, free_at, *cover);
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)

@@ -4,9 +4,9 @@
 // The mesh stage's second way of joining the output points into triangles: plane by plane.
 // The boundary of a sum of polyhedra is made of planar faces, and every output point lies on
 // one (inside a convolution facet: it has that facet's normal) or on several (on a crease or
-// a trim curve: no normal). The points are grouped by the plane they lie on (the plane of
-// the convolution facet each point was decided on; a point without a normal also joins every
-// plane near it that it lies on), each plane's points are triangulated in the plane
+// a trim curve). The points are grouped by the plane they lie on (the plane of the
+// convolution facet each point was decided on; a point also joins every plane near it that
+// it lies on), each plane's points are triangulated in the plane
 // (constrained 2D Delaunay, the crease rows as constraints), and a triangle is kept when it
 // is on that plane's face of the boundary: just outside the plane (along its outward normal)
 // the sum is free, just inside it collides (the exact CD test at a point), and the whole
@@ -53,15 +53,14 @@ struct Point_plane
   std::vector<std::size_t> points;
 };
 
-/// Groups `positions` by plane: one plane per distinct (face normal, offset) of the points
-/// (`face_normals`: the normal of the convolution facet a point was decided on; equal within
-/// `tolerance`, relative to 1 for the normal and to `scale` for the offset); a point without
-/// a normal (`normals`: null on creases and trim curves) also joins the planes of the points
-/// within 2 d of it that it lies on (within tolerance * scale), and so on along crease rows.
+/// Groups `positions` by plane: one plane per distinct (normal, offset) of the points
+/// (`normals`: the normal of the convolution facet each point was decided on; equal within
+/// `tolerance`, relative to 1 for the normal and to `scale` for the offset); a point also
+/// joins the planes of the points within 2 d of it that it lies on (within tolerance *
+/// scale), and so on along crease rows (a point on a crease is on two faces or more).
 inline std::vector<Point_plane>
 point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
-             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& face_normals, double d)
+             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d)
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
   const double tolerance = 1e-9;
@@ -83,7 +82,7 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
            std::abs(a.normal.z() - n.z()) <= tolerance && std::abs(a.offset - c) <= tolerance * scale;
   };
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Vector n = face_normals[i] / std::sqrt(face_normals[i].squared_length());
+    const Vector n = normals[i] / std::sqrt(normals[i].squared_length());
     const double c = offset(i, n);
     const Key k = key(n, c);
     std::size_t found = std::size_t(-1);
@@ -103,10 +102,9 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
     planes[found].points.push_back(i);
     plane_of[i] = found;
   }
-  // The points without a normal join the planes of the points within two cells (2 d wide) of
-  // theirs that they lie on, spreading along crease rows: a plane known near a point it joins
-  // is asked of the points near that one (a face narrower than d may have its points with a
-  // normal only at its ends).
+  // The points join the planes of the points within two cells (2 d wide) of theirs that they
+  // lie on, spreading along crease rows: a plane known near a point it joins is asked of the
+  // points near that one (a face narrower than d may have points of its own only at its ends).
   using Cell = std::array<std::int64_t, 3>;
   auto cell_of = [&](std::size_t i) {
     const auto& p = positions[i];
@@ -114,8 +112,8 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
                 std::int64_t(std::floor(p.z() / (2 * d)))};
   };
   std::map<Cell, std::vector<std::size_t>> near;     // cell -> planes of its points
-  std::map<Cell, std::vector<std::size_t>> bare;     // cell -> its points without a normal
-  std::vector<std::vector<std::size_t>> joined(positions.size()); // planes of a point without a normal
+  std::map<Cell, std::vector<std::size_t>> points_in; // cell -> its points
+  std::vector<std::vector<std::size_t>> joined(positions.size()); // planes of a point
   std::vector<Cell> changed;                         // cells whose planes were not yet asked around
   auto add_near = [&](const Cell& c, std::size_t j) {
     std::vector<std::size_t>& known = near[c];
@@ -125,18 +123,16 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
   };
   for (std::size_t i = 0; i < positions.size(); ++i) {
     add_near(cell_of(i), plane_of[i]);
-    if (normals[i] == CGAL::NULL_VECTOR) {
-      bare[cell_of(i)].push_back(i);
-      joined[i].push_back(plane_of[i]);
-    }
+    points_in[cell_of(i)].push_back(i);
+    joined[i].push_back(plane_of[i]);
   }
   while (!changed.empty()) {
     const Cell c = changed.back();
     changed.pop_back();
     const std::vector<std::size_t> known = near[c];
     for (int m = 0; m < 125; ++m) {
-      const auto cell = bare.find(Cell{c[0] + m % 5 - 2, c[1] + m / 5 % 5 - 2, c[2] + m / 25 - 2});
-      if (cell == bare.end()) continue;
+      const auto cell = points_in.find(Cell{c[0] + m % 5 - 2, c[1] + m / 5 % 5 - 2, c[2] + m / 25 - 2});
+      if (cell == points_in.end()) continue;
       for (std::size_t i : cell->second)
         for (std::size_t j : known) {
           if (std::find(joined[i].begin(), joined[i].end(), j) != joined[i].end()) continue;
@@ -163,8 +159,7 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
 template <class IsFreeAt>
 std::vector<std::array<std::size_t, 3>>
 plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
-                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& face_normals, double d,
+                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d,
                 IsFreeAt&& is_free_at, Face_cover& cover)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -185,7 +180,7 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
   };
   auto coordinates = [](const K::Point_3& x) { return std::array<double, 3>{x.x(), x.y(), x.z()}; };
   std::vector<std::array<std::size_t, 3>> triangles;
-  const std::vector<Point_plane> planes = point_planes(positions, normals, face_normals, d);
+  const std::vector<Point_plane> planes = point_planes(positions, normals, d);
   std::vector<std::vector<std::size_t>> planes_of(positions.size());
   for (std::size_t j = 0; j < planes.size(); ++j)
     for (std::size_t i : planes[j].points) planes_of[i].push_back(j);
