@@ -829,3 +829,19 @@ TEST_CASE("mesh of a sweep: valid, every vertex on the exact swept polytope, its
   CHECK(volume <= exact);
   CHECK(volume > 0.99 * exact);
 }
+
+TEST_CASE("mesh of a swept cube: plane by plane, its volume exact", "[applications][mesh][sweep]")
+{
+  // the unit cube swept along v = (2, 1, 0.5): the advancing front cuts its corners (three flat
+  // faces meeting) into shells of their own; plane by plane every face is exact. Volume: the
+  // cube's plus |v| times its shadow along v, (|vx| + |vy| + |vz|) / |v|: 1 + 3.5
+  const Mesh P = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  const std::vector<IK::Point_3> path = {IK::Point_3(0, 0, 0), IK::Point_3(2, 1, 0.5)};
+  Mesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::point_sweep_mesh(P, path, 0.1, m, CGAL::parameters::mesh_statistics(ms));
+  REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
+  CHECK(ms.by_planes);
+  CHECK(ms.checks.shells == 1);
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) == Approx(4.5).epsilon(1e-12));
+}
