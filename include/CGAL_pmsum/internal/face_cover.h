@@ -156,8 +156,9 @@ private:
   void add_polygon(std::size_t f)
   {
     Polygon polygon;
-    for (const auto& [i, j] : corner_indices(m_facets[f])) {
-      auto coordinate = [&](int a) { return EK::FT(m_p.points[i][a]) + EK::FT(m_q.points[j][a]); };
+    for (const std::pair<Index, Index>& corner : corner_indices(m_facets[f])) {
+      const auto &p = m_p.points[corner.first], &q = m_q.points[corner.second];
+      auto coordinate = [&](int a) { return EK::FT(p[a]) + EK::FT(q[a]); };
       polygon.emplace_back(coordinate((m_drop + 1) % 3), coordinate((m_drop + 2) % 3));
     }
     const CGAL::Orientation o = CGAL::orientation(polygon[0], polygon[1], polygon[2]);
