@@ -81,6 +81,7 @@ public:
     }
     std::sort(chosen.begin(), chosen.end());
     chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+    std::vector<std::size_t> in_plane;
     for (std::size_t f : chosen) {
       const auto corners = facet_corners(m_facets[f]);
       const Vec3<double> m = cross(corners[1] - corners[0], corners[2] - corners[0]);
@@ -89,9 +90,16 @@ public:
       const double tolerance = 1e-9;
       bool same = std::abs(s * dot(u, corners[0]) - c) <= tolerance * m_scale;
       for (int a = 0; a < 3; ++a) same &= std::abs(s * u[a] - n[a]) <= tolerance;
-      if (same) add_polygon(f);
+      if (same) in_plane.push_back(f);
     }
-    compute_border();
+    // (a plane is asked for again by no_face_over_hole() after plane_triangles())
+    auto known = m_borders.find({in_plane, drop});
+    if (known == m_borders.end()) {
+      for (std::size_t f : in_plane) add_polygon(f);
+      compute_border();
+      known = m_borders.emplace(std::make_pair(in_plane, drop), m_border).first;
+    }
+    m_border = known->second;
   }
 
   /// Does the triangle with these corners, each moved `inset` towards its centroid (beyond
@@ -211,26 +219,29 @@ private:
   static void right_cover(const EK::Point_2& a, const EK::Point_2& b, const Polygon& g,
                           std::vector<std::pair<EK::FT, EK::FT>>& covered)
   {
-    const EK::Vector_2 ab = b - a;
-    auto area = [&](const EK::Point_2& x) { return ab.x() * (x.y() - a.y()) - ab.y() * (x.x() - a.x()); };
-    auto along = [&](const EK::Point_2& x) { return ((x - a) * ab) / ab.squared_length(); };
-    std::vector<EK::FT> s;
+    // The sides first, by the filtered predicate; constructions only for a polygon that the
+    // line meets.
+    std::vector<CGAL::Sign> side;
     bool right = false, left = false;
     int on = 0;
     for (const EK::Point_2& x : g) {
-      s.push_back(area(x));
-      const CGAL::Sign sign = CGAL::sign(s.back());
-      right |= sign == CGAL::NEGATIVE;
-      left |= sign == CGAL::POSITIVE;
-      on += sign == CGAL::ZERO;
+      side.push_back(CGAL::orientation(a, b, x));
+      right |= side.back() == CGAL::NEGATIVE;
+      left |= side.back() == CGAL::POSITIVE;
+      on += side.back() == CGAL::ZERO;
     }
     if (!right || (!left && on < 2)) return;
+    const EK::Vector_2 ab = b - a;
+    auto area = [&](const EK::Point_2& x) { return ab.x() * (x.y() - a.y()) - ab.y() * (x.x() - a.x()); };
+    auto along = [&](const EK::Point_2& x) { return ((x - a) * ab) / ab.squared_length(); };
     std::vector<EK::FT> at; // where the line meets g's border
     for (std::size_t k = 0; k < g.size(); ++k) {
       const std::size_t l = (k + 1) % g.size();
-      if (CGAL::sign(s[k]) == CGAL::ZERO) at.push_back(along(g[k]));
-      else if (CGAL::sign(s[k]) * CGAL::sign(s[l]) == CGAL::NEGATIVE)
-        at.push_back(along(g[k] + (s[k] / (s[k] - s[l])) * (g[l] - g[k])));
+      if (side[k] == CGAL::ZERO) at.push_back(along(g[k]));
+      else if (side[k] * side[l] == CGAL::NEGATIVE) {
+        const EK::FT sk = area(g[k]), sl = area(g[l]);
+        at.push_back(along(g[k] + (sk / (sk - sl)) * (g[l] - g[k])));
+      }
     }
     const auto [lo, hi] = std::minmax_element(at.begin(), at.end());
     if (*lo < *hi) covered.emplace_back(*lo, *hi);
@@ -252,6 +263,7 @@ private:
   int m_drop = 2;
   std::vector<Polygon> m_polygons;
   std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>> m_border;
+  std::map<std::pair<std::vector<std::size_t>, int>, std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>>> m_borders;
 };
 
 } // namespace internal
