@@ -53,11 +53,10 @@ public:
       const Vec3<double> n = cross(corners[1] - corners[0], corners[2] - corners[0]);
       const double length = std::sqrt(dot(n, n));
       if (!(length > 0)) continue;
-      for (double sign : {1., -1.}) { // both sides: a facet is looked up by its plane
-        const Vec3<double> u = scaled(n, sign / length);
-        m_by_plane.emplace(key(u, dot(u, corners[0])), m_facets.size());
-      }
-      m_facets.push_back(pair);
+      const Vec3<double> u = scaled(n, 1 / length);
+      for (double sign : {1., -1.}) // both sides: a facet is looked up by its plane
+        m_by_plane.emplace(key(scaled(u, sign), sign * dot(u, corners[0])), m_facets.size());
+      m_facets.push_back(Facet{pair, u, dot(u, corners[0])});
       for (const auto& c : corners)
         for (double x : c) m_scale = (std::max)(m_scale, std::abs(x));
     }
@@ -69,8 +68,6 @@ public:
   void set_plane(const std::array<double, 3>& n, double c, int drop)
   {
     m_drop = drop;
-    m_polygons.clear();
-    m_border.clear();
     std::vector<std::size_t> chosen;
     const Key k = key(n, c);
     for (int m = 0; m < 81; ++m) {
@@ -83,23 +80,21 @@ public:
     chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
     std::vector<std::size_t> in_plane;
     for (std::size_t f : chosen) {
-      const auto corners = facet_corners(m_facets[f]);
-      const Vec3<double> m = cross(corners[1] - corners[0], corners[2] - corners[0]);
-      const Vec3<double> u = scaled(m, 1 / std::sqrt(dot(m, m)));
+      const Vec3<double>& u = m_facets[f].normal;
       const double s = dot(u, Vec3<double>{n[0], n[1], n[2]}) >= 0 ? 1 : -1;
       const double tolerance = 1e-9;
-      bool same = std::abs(s * dot(u, corners[0]) - c) <= tolerance * m_scale;
+      bool same = std::abs(s * m_facets[f].offset - c) <= tolerance * m_scale;
       for (int a = 0; a < 3; ++a) same &= std::abs(s * u[a] - n[a]) <= tolerance;
       if (same) in_plane.push_back(f);
     }
     // (a plane is asked for again by no_face_over_hole() after plane_triangles())
     auto known = m_borders.find({in_plane, drop});
     if (known == m_borders.end()) {
-      for (std::size_t f : in_plane) add_polygon(f);
-      compute_border();
-      known = m_borders.emplace(std::make_pair(in_plane, drop), m_border).first;
+      std::vector<Polygon> polygons;
+      for (std::size_t f : in_plane) add_polygon(f, polygons);
+      known = m_borders.emplace(std::make_pair(in_plane, drop), border(polygons)).first;
     }
-    m_border = known->second;
+    m_border = &known->second;
   }
 
   /// Does the triangle with these corners, each moved `inset` towards its centroid (beyond
@@ -123,7 +118,7 @@ public:
     }
     const EK::Triangle_2 triangle(t[0], t[1], t[2]);
     const CGAL::Bbox_2 box = triangle.bbox();
-    for (const auto& [piece, piece_box] : m_border)
+    for (const auto& [piece, piece_box] : *m_border)
       if (CGAL::do_overlap(box, piece_box) && CGAL::do_intersect(piece, triangle)) return false;
     return true;
   }
@@ -131,6 +126,13 @@ public:
 private:
   using Key = std::array<std::int64_t, 4>;
   using Polygon = std::vector<EK::Point_2>; // convex, counterclockwise
+  using Border = std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>>; // pieces with their boxes
+  struct Facet
+  {
+    Feature_pair pair;
+    Vec3<double> normal; // unit (rounded)
+    double offset;       // normal . (a corner)
+  };
 
   static Key key(const Vec3<double>& u, double c)
   { return Key{std::llround(u[0] * 1e6), std::llround(u[1] * 1e6), std::llround(u[2] * 1e6), std::llround(c * 1e3)}; }
@@ -159,12 +161,12 @@ private:
     return out;
   }
 
-  /// The facet's projection, exactly (each coordinate the exact sum p + q), counterclockwise;
-  /// none if it projects to a segment.
-  void add_polygon(std::size_t f)
+  /// Appends facet f's projection, exactly (each coordinate the exact sum p + q),
+  /// counterclockwise; none if it projects to a segment.
+  void add_polygon(std::size_t f, std::vector<Polygon>& polygons) const
   {
     Polygon polygon;
-    for (const std::pair<Index, Index>& corner : corner_indices(m_facets[f])) {
+    for (const std::pair<Index, Index>& corner : corner_indices(m_facets[f].pair)) {
       const auto &p = m_p.points[corner.first], &q = m_q.points[corner.second];
       auto coordinate = [&](int a) { return EK::FT(p[a]) + EK::FT(q[a]); };
       polygon.emplace_back(coordinate((m_drop + 1) % 3), coordinate((m_drop + 2) % 3));
@@ -172,46 +174,48 @@ private:
     const CGAL::Orientation o = CGAL::orientation(polygon[0], polygon[1], polygon[2]);
     if (o == CGAL::COLLINEAR) return;
     if (o == CGAL::CLOCKWISE) std::reverse(polygon.begin(), polygon.end());
-    m_polygons.push_back(std::move(polygon));
+    polygons.push_back(std::move(polygon));
   }
 
-  /// The border of the union: the stretches of each polygon's edges (the polygon on their
-  /// left) whose right side no other polygon covers.
-  void compute_border()
+  /// The border of the union of `polygons`: the stretches of each polygon's edges (the
+  /// polygon on their left) whose right side no other polygon covers.
+  static Border border(const std::vector<Polygon>& polygons)
   {
+    Border out;
     using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-    std::vector<Box> edges, polygons;
+    std::vector<Box> edges, polygon_boxes;
     std::vector<std::pair<std::size_t, std::size_t>> edge_ids; // (polygon, corner)
-    for (std::size_t g = 0; g < m_polygons.size(); ++g) {
+    for (std::size_t g = 0; g < polygons.size(); ++g) {
       CGAL::Bbox_2 box;
-      for (std::size_t k = 0; k < m_polygons[g].size(); ++k) {
-        const EK::Point_2 &a = m_polygons[g][k], &b = m_polygons[g][(k + 1) % m_polygons[g].size()];
+      for (std::size_t k = 0; k < polygons[g].size(); ++k) {
+        const EK::Point_2 &a = polygons[g][k], &b = polygons[g][(k + 1) % polygons[g].size()];
         const CGAL::Bbox_2 e = a.bbox() + b.bbox();
         edges.emplace_back(e, edge_ids.size());
         edge_ids.emplace_back(g, k);
         box += e;
       }
-      polygons.emplace_back(box, g);
+      polygon_boxes.emplace_back(box, g);
     }
     std::vector<std::vector<std::size_t>> near(edge_ids.size()); // edge -> polygons near it
-    CGAL::box_intersection_d(edges.begin(), edges.end(), polygons.begin(), polygons.end(),
+    CGAL::box_intersection_d(edges.begin(), edges.end(), polygon_boxes.begin(), polygon_boxes.end(),
                              [&](const Box& e, const Box& g) {
                                if (g.info() != edge_ids[e.info()].first) near[e.info()].push_back(g.info());
                              });
     for (std::size_t e = 0; e < edge_ids.size(); ++e) {
-      const Polygon& own = m_polygons[edge_ids[e].first];
+      const Polygon& own = polygons[edge_ids[e].first];
       const EK::Point_2 &a = own[edge_ids[e].second], &b = own[(edge_ids[e].second + 1) % own.size()];
       std::vector<std::pair<EK::FT, EK::FT>> covered; // parameters along a -> b
-      for (std::size_t g : near[e]) right_cover(a, b, m_polygons[g], covered);
+      for (std::size_t g : near[e]) right_cover(a, b, polygons[g], covered);
       std::sort(covered.begin(), covered.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
       EK::FT reached = 0; // [0, reached] covered, or a piece of border ends there
       for (const auto& [from, to] : covered) {
         if (!(reached < 1)) break;
-        if (reached < from) add_piece(a, b, reached, (CGAL::min)(from, EK::FT(1)));
+        if (reached < from) add_piece(a, b, reached, (CGAL::min)(from, EK::FT(1)), out);
         if (reached < to) reached = to;
       }
-      if (reached < 1) add_piece(a, b, reached, 1);
+      if (reached < 1) add_piece(a, b, reached, 1, out);
     }
+    return out;
   }
 
   /// The parameters along a -> b of the stretch of that line whose right side polygon g
@@ -247,23 +251,22 @@ private:
     if (*lo < *hi) covered.emplace_back(*lo, *hi);
   }
 
-  void add_piece(const EK::Point_2& a, const EK::Point_2& b, const EK::FT& from, const EK::FT& to)
+  static void add_piece(const EK::Point_2& a, const EK::Point_2& b, const EK::FT& from, const EK::FT& to, Border& out)
   {
     if (!(from < to) || !(to > 0)) return;
     const EK::FT f = (CGAL::max)(from, EK::FT(0));
     const EK::Segment_2 piece(a + f * (b - a), a + to * (b - a));
-    m_border.emplace_back(piece, piece.bbox());
+    out.emplace_back(piece, piece.bbox());
   }
 
   const Mesh_data& m_p;
   const Mesh_data& m_q;
-  std::vector<Feature_pair> m_facets;
+  std::vector<Facet> m_facets;
   std::multimap<Key, std::size_t> m_by_plane;
   double m_scale = 0;
   int m_drop = 2;
-  std::vector<Polygon> m_polygons;
-  std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>> m_border;
-  std::map<std::pair<std::vector<std::size_t>, int>, std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>>> m_borders;
+  const Border* m_border = nullptr; // the selected plane's, in m_borders
+  std::map<std::pair<std::vector<std::size_t>, int>, Border> m_borders; // by (facets, axis)
 };
 
 } // namespace internal

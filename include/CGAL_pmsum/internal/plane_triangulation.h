@@ -244,6 +244,23 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
   return triangles;
 }
 
+/// The double positions of the corners of face f of `mesh` (a triangle: k is the number of
+/// its corners, 3 unless the face is not a triangle).
+template <class TriangleMesh>
+std::array<std::array<double, 3>, 3> face_corners(const TriangleMesh& mesh,
+                                                  typename boost::graph_traits<TriangleMesh>::face_descriptor f, int& k)
+{
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::array<std::array<double, 3>, 3> x{};
+  k = 0;
+  for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
+    const auto& p = get(vpm, v);
+    if (k < 3) x[k] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    ++k;
+  }
+  return x;
+}
+
 /// Is no face of `mesh` over empty space: at its centroid c, is the sum free just outside
 /// (c + t n, t = d / 2^30) and still free at c - t n for every t = d / 2^30, d / 2^24, ...,
 /// d / 2 (inward, no solid within d/2)? Such a face closes a hole over a passage or a
@@ -254,16 +271,12 @@ template <class TriangleMesh, class IsFreeAt>
 bool no_face_over_empty_space(const TriangleMesh& mesh, double d, IsFreeAt&& is_free_at)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const auto vpm = get(CGAL::vertex_point, mesh);
   auto free_at = [&](const K::Point_3& x) { return is_free_at(std::array<double, 3>{x.x(), x.y(), x.z()}); };
   for (auto f : faces(mesh)) {
+    int k;
+    const auto x = face_corners(mesh, f, k);
     std::array<K::Point_3, 3> p;
-    int k = 0;
-    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
-      const auto& x = get(vpm, v);
-      if (k < 3) p[k] = K::Point_3(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
-      ++k;
-    }
+    for (int i = 0; i < 3; ++i) p[i] = K::Point_3(x[i][0], x[i][1], x[i][2]);
     K::Vector_3 n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
     if (k != 3 || n == CGAL::NULL_VECTOR) return false;
     n = n / std::sqrt(n.squared_length());
@@ -285,16 +298,10 @@ template <class TriangleMesh>
 bool no_face_over_hole(const TriangleMesh& mesh, double d, Face_cover& cover)
 {
   using Corners = std::array<std::array<double, 3>, 3>;
-  const auto vpm = get(CGAL::vertex_point, mesh);
   std::map<std::array<std::int64_t, 4>, std::vector<std::pair<Corners, std::array<double, 4>>>> by_plane;
   for (auto f : faces(mesh)) {
-    Corners x;
-    int k = 0;
-    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
-      const auto& p = get(vpm, v);
-      if (k < 3) x[k] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      ++k;
-    }
+    int k;
+    const Corners x = face_corners(mesh, f, k);
     Vec3<double> n = cross(x[1] - x[0], x[2] - x[0]);
     const double length = std::sqrt(dot(n, n));
     if (k != 3 || !(length > 0)) return false;
