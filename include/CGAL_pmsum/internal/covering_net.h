@@ -11,9 +11,12 @@
 // Facing points: a point does not cover one when one of its outward normals makes more than
 // 120 degrees with one of the other's (a point on a crease has the normals of its pair's
 // cone): the two walls of a passage narrower than d/2, the two sides of a part thinner than
-// d/2, the two lips of a passage's mouth (normals {up, +x} and {up, -x}). Both are kept,
+// d/2, the two lips of a passage's mouth (normals {up, +x} and {up, -x}), and two points on
+// trim curves whose facets are hidden on opposite sides (the two edges of a face strip
+// narrower than d/2, such as a narrow tunnel's wall). Both are kept,
 // closer than d/2 to each other: a reconstruction needs points on both sides, and covering
-// only needs more points. No normal (unknown) faces none.
+// only needs more points. No normal (unknown) faces none. Two points within the rounding
+// margin below of each other are one point: the first covers the other whatever they face.
 //
 // Distances are computed in double on rounded positions, with a margin that makes both
 // promises hold for the exact points: a candidate counts as covered only if its exact
@@ -36,11 +39,14 @@ namespace CGAL {
 namespace Pmsum {
 namespace internal {
 
-/// Unit outward normals of a point of the net: `count` from `first` (none: unknown).
+/// Unit outward normals of a point of the net: `count` from `first` (none: unknown); for a
+/// point on a trim curve, also the unit direction in its facet towards the facet's hidden
+/// side (zero: none).
 struct Net_normals
 {
   const Point3* first = nullptr;
   std::uint32_t count = 0;
+  Point3 hidden{0, 0, 0};
 };
 
 class Covering_net
@@ -67,9 +73,11 @@ public:
 
   using Normals = Net_normals;
 
-  /// Do points of normals a and b face each other (two normals more than 120 degrees apart)?
+  /// Do points of normals a and b face each other (two normals, or the hidden sides of two
+  /// trim points, more than 120 degrees apart)?
   static bool facing(const Normals& a, const Normals& b)
   {
+    if (dot(a.hidden, b.hidden) < -0.5) return true;
     for (std::uint32_t i = 0; i < a.count; ++i)
       for (std::uint32_t j = 0; j < b.count; ++j)
         if (dot(a.first[i], b.first[j]) < -0.5) return true;
@@ -96,7 +104,8 @@ public:
       for (std::uint32_t n = first; n != none; n = m_next[n]) {
         const Point3& y = m_points[n];
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
-        if (dx * dx + dy * dy + dz * dz < rr * rr && !facing(m_normals[n], normals)) return true;
+        const double squared = dx * dx + dy * dy + dz * dz; // (within the margin: one point)
+        if (squared < rr * rr && (squared <= m_margin * m_margin || !facing(m_normals[n], normals))) return true;
       }
     }
     return false;

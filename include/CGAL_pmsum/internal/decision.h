@@ -164,6 +164,7 @@ void transfer(Io& io, Decision& d)
     io.io(t.trim.p); io.io(t.trim.q); io.io(t.trim.lambda);
     io.io(t.trim.p2); io.io(t.trim.q2); io.io(t.trim.mu);
     io.io(t.trim.origin_p); io.io(t.trim.origin_q);
+    io.io(t.hidden);
   }
   io.size_of(d.tested);
   for (auto& [key, decision] : d.tested) { io.io(key); io.io(decision); }
@@ -319,8 +320,10 @@ void commit_piece(const Decision_context& c, std::size_t i, Pair_decision& decid
     emit(t);
   }
   for (const Trim_point& t : decided.trims) {
-    if (net && net->covers_within(t.x, t.radius, normals)) continue;
-    if (net) net->insert(t.x, normals);
+    Covering_net::Normals trim_normals = normals;
+    trim_normals.hidden = t.hidden;
+    if (net && net->covers_within(t.x, t.radius, trim_normals)) continue;
+    if (net) net->insert(t.x, trim_normals);
     emit(t);
   }
 }

@@ -108,6 +108,7 @@ struct Trim_point
   Point3 x;
   double radius;
   std::uint32_t direction; // index in Candidate_pairs::directions
+  Point3 hidden{0, 0, 0};  // unit, along the segment towards its part hidden there (islands: 0)
 };
 
 /// The closed lattice of the convolution facet of a 2-dimensional feature pair, or the part
@@ -368,8 +369,8 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
   const Direction* directions = pairs.directions.data() + fp.first_direction;
   const double radius = (std::max)(0., d - lattice.diameter());
   // The point of corner a plus trim (exact weights), with its origins and position.
-  auto add = [&](std::uint32_t a, Trim trim) {
-    Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, radius, fp.first_direction};
+  auto add = [&](std::uint32_t a, Trim trim, const Point3& hidden) {
+    Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, radius, fp.first_direction, hidden};
     t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim, 0), P);
     t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim, 1), Q);
     for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
@@ -385,9 +386,21 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     ends.clear();
     search.free_ends(s, directions, fp.number_of_directions, ends, {ca.witness, cb.witness});
     has_ends = !ends.empty();
+    // (ends: first and last of each free part: the segment is hidden before a first end,
+    // after a last one. A free part shorter than d/2 crosses a strip of the facet narrower
+    // than that: its ends get their hidden sides, so that the net keeps both edges' points.)
+    Point3 forward = position(b) - position(a);
+    const double length = std::sqrt(dot(forward, forward));
+    forward = length > 0 ? scaled(forward, 1 / length) : Point3{0, 0, 0};
     for (std::size_t k = 0; k < ends.size(); ++k) {
       if (k > 0 && compare(ends[k], ends[k - 1]) == CGAL::ZERO) continue; // an isolated free point
-      add(a, Trim{lattice.p(b), lattice.q(b), ends[k].value(), {}, {}, {}, {}, {}});
+      const std::size_t other = k % 2 == 0 ? k + 1 : k - 1; // the other end of its free part
+      const double width =
+        other < ends.size() ? std::abs(CGAL::to_double(ends[k].value()) - CGAL::to_double(ends[other].value())) * length
+                            : d;
+      const bool strip = width > 0 && width < d / 2;
+      add(a, Trim{lattice.p(b), lattice.q(b), ends[k].value(), {}, {}, {}, {}, {}},
+          !strip ? Point3{0, 0, 0} : k % 2 == 0 ? scaled(forward, -1.) : forward);
     }
   }
   if (!islands) return;
@@ -407,7 +420,8 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     const std::optional<Cell_weights> w =
       islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])});
     if (w)
-      add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}});
+      add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}},
+          Point3{0, 0, 0});
   }
 }
 
