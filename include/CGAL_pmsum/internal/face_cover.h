@@ -100,7 +100,7 @@ public:
   /// Does the triangle with these corners, each moved `inset` towards its centroid (beyond
   /// the rounding of its corners), projected along the plane's axis, meet no piece of the
   /// border of the union of the plane's facets? (Then, if one of its points is in the union,
-  /// all of it is.)
+  /// all of it is.) @pre set_plane() was called (the plane whose facets are asked).
   bool covers(const std::array<std::array<double, 3>, 3>& corners, double inset) const
   {
     std::array<EK::Point_2, 3> t;

@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -244,20 +245,20 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
   return triangles;
 }
 
-/// The double positions of the corners of face f of `mesh` (a triangle: k is the number of
-/// its corners, 3 unless the face is not a triangle).
+/// The double positions of the corners of face f of `mesh`; none if f is not a triangle.
 template <class TriangleMesh>
-std::array<std::array<double, 3>, 3> face_corners(const TriangleMesh& mesh,
-                                                  typename boost::graph_traits<TriangleMesh>::face_descriptor f, int& k)
+std::optional<std::array<std::array<double, 3>, 3>>
+face_corners(const TriangleMesh& mesh, typename boost::graph_traits<TriangleMesh>::face_descriptor f)
 {
   const auto vpm = get(CGAL::vertex_point, mesh);
   std::array<std::array<double, 3>, 3> x{};
-  k = 0;
+  int k = 0;
   for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
+    if (k == 3) return std::nullopt;
     const auto& p = get(vpm, v);
-    if (k < 3) x[k] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    ++k;
+    x[k++] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   }
+  if (k != 3) return std::nullopt;
   return x;
 }
 
@@ -273,12 +274,12 @@ bool no_face_over_empty_space(const TriangleMesh& mesh, double d, IsFreeAt&& is_
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   auto free_at = [&](const K::Point_3& x) { return is_free_at(std::array<double, 3>{x.x(), x.y(), x.z()}); };
   for (auto f : faces(mesh)) {
-    int k;
-    const auto x = face_corners(mesh, f, k);
+    const auto x = face_corners(mesh, f);
+    if (!x) return false;
     std::array<K::Point_3, 3> p;
-    for (int i = 0; i < 3; ++i) p[i] = K::Point_3(x[i][0], x[i][1], x[i][2]);
+    for (int i = 0; i < 3; ++i) p[i] = K::Point_3((*x)[i][0], (*x)[i][1], (*x)[i][2]);
     K::Vector_3 n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
-    if (k != 3 || n == CGAL::NULL_VECTOR) return false;
+    if (n == CGAL::NULL_VECTOR) return false;
     n = n / std::sqrt(n.squared_length());
     const K::Point_3 c = CGAL::centroid(p[0], p[1], p[2]);
     if (!free_at(c + std::ldexp(d, -30) * n)) continue;
@@ -300,15 +301,15 @@ bool no_face_over_hole(const TriangleMesh& mesh, double d, Face_cover& cover)
   using Corners = std::array<std::array<double, 3>, 3>;
   std::map<std::array<std::int64_t, 4>, std::vector<std::pair<Corners, std::array<double, 4>>>> by_plane;
   for (auto f : faces(mesh)) {
-    int k;
-    const Corners x = face_corners(mesh, f, k);
-    Vec3<double> n = cross(x[1] - x[0], x[2] - x[0]);
+    const std::optional<Corners> x = face_corners(mesh, f);
+    if (!x) return false;
+    Vec3<double> n = cross((*x)[1] - (*x)[0], (*x)[2] - (*x)[0]);
     const double length = std::sqrt(dot(n, n));
-    if (k != 3 || !(length > 0)) return false;
+    if (!(length > 0)) return false;
     n = scaled(n, 1 / length);
-    const double c = dot(n, x[0]);
+    const double c = dot(n, (*x)[0]);
     by_plane[{std::llround(n[0] * 1e6), std::llround(n[1] * 1e6), std::llround(n[2] * 1e6), std::llround(c * 1e6)}]
-      .emplace_back(x, std::array<double, 4>{n[0], n[1], n[2], c});
+      .emplace_back(*x, std::array<double, 4>{n[0], n[1], n[2], c});
   }
   for (const auto& [key, plane_faces] : by_plane) {
     const auto& [n0, n1, n2, c] = plane_faces.front().second;
