@@ -660,19 +660,18 @@ TEST_CASE("mesh of a thin part: the advancing front, or plane by plane", "[appli
 
 TEST_CASE("mesh that cannot be made: an error, and no mesh", "[applications][mesh]")
 {
-  // a block with a tunnel + a cube turned about z that leaves it 1/2000 wide (the suite's
-  // narrow tunnel, not turned as in the next test): the net keeps both corner rows of each
-  // wall, but they end 0.047 below the top face (the point where a row meets its facet's top
-  // edge is covered by the row's last point), so the walls stop short of the top face, and the
-  // lids that fill_holes() puts over the mouth are refused (no_face_over_hole) at every level
-  // (a known limit: when it is meshed, this test must change)
+  // the suite's narrow tunnel (next test) at a coarse d, 0.1 of the sum's size: at every level
+  // (d, d/2, d/4, each reusing the coarser decisions) the plane triangulation leaves the walls
+  // short of each other somewhere along the tunnel, and the lids that fill_holes() puts across
+  // it are refused (no_face_over_empty_space, no_face_over_hole) (a known limit: when it is
+  // meshed, this test must change)
   const Mesh P = to_mesh<Mesh>(tunnel_block());
   const Mesh Q = to_mesh<Mesh>(turned_cube((1 - 1. / 2000) / 1.4, 0.8, 0.6));
   Mesh m = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
   CGAL::Pmsum::Mesh_statistics ms;
   std::string why;
   try {
-    CGAL::point_minkowski_sum_mesh(P, Q, 0.34, m, CGAL::parameters::mesh_statistics(ms));
+    CGAL::point_minkowski_sum_mesh(P, Q, 0.85, m, CGAL::parameters::mesh_statistics(ms));
   } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
     why = e.what();
   }
@@ -682,24 +681,32 @@ TEST_CASE("mesh that cannot be made: an error, and no mesh", "[applications][mes
   CHECK(ms.refinements == 2);
 }
 
-TEST_CASE("mesh of a narrow tunnel, turned: plane by plane, the tunnel kept", "[applications][mesh]")
+TEST_CASE("mesh of a narrow tunnel, in its axes and turned: plane by plane, the tunnel kept", "[applications][mesh]")
 {
-  // The suite's narrow tunnel turned by a non-round rotation: the tunnel, 1/2000 wide (d/900),
-  // has walls narrower than the points' spacing between four corner rows of trim points; the
-  // net keeps both rows of each wall (the ends of a free part shorter than d/2 do not cover
-  // each other), so the walls are triangulated in their planes and the tunnel stays open:
-  // one shell of genus 1 (Euler characteristic 0; lids over its mouths would make it 2).
-  const Mesh P = to_mesh<Mesh>(rotated(tunnel_block()));
-  const Mesh Q = to_mesh<Mesh>(rotated(turned_cube((1 - 1. / 2000) / 1.4, 0.8, 0.6)));
-  Mesh m;
-  CGAL::Pmsum::Mesh_statistics ms;
-  CGAL::point_minkowski_sum_mesh(P, Q, 0.45, m, CGAL::parameters::mesh_statistics(ms));
-  REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
-  CHECK(ms.by_planes);
-  CHECK(ms.checks.shells == 1u);
-  CHECK(ms.point_distance < ms.covering_distance);
-  const long euler = long(vertices(m).size()) - long(edges(m).size()) + long(faces(m).size());
-  CHECK(euler == 0);
+  // A block with a tunnel + a cube turned about z that leaves it 1/2000 wide (d/700), then the
+  // whole turned by a non-round rotation: the tunnel's walls, narrower than the points'
+  // spacing, lie between four corner rows of trim points; the net keeps both rows of each
+  // wall (the ends of a free part shorter than d/2 do not cover each other) and the mouths'
+  // corners (where a row meets the top or bottom face: the ends of the wall's free part on
+  // its facet's border, seen from the facet's side), so the walls are triangulated in their
+  // planes up to the faces and the tunnel stays open: one shell of genus 1 (Euler
+  // characteristic 0; lids over its mouths would make it 2).
+  for (bool turned : {false, true}) {
+    INFO((turned ? "turned" : "in its axes"));
+    const auto turn = [&](const auto& polyhedron) { return turned ? rotated(polyhedron) : polyhedron; };
+    const Mesh P = to_mesh<Mesh>(turn(tunnel_block()));
+    const Mesh Q = to_mesh<Mesh>(turn(turned_cube((1 - 1. / 2000) / 1.4, 0.8, 0.6)));
+    Mesh m;
+    CGAL::Pmsum::Mesh_statistics ms;
+    CGAL::point_minkowski_sum_mesh(P, Q, turned ? 0.45 : 0.34, m, CGAL::parameters::mesh_statistics(ms));
+    REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
+    CHECK(ms.by_planes);
+    CHECK(ms.refinements == 0);
+    CHECK(ms.checks.shells == 1u);
+    CHECK(ms.point_distance < ms.covering_distance);
+    const long euler = long(vertices(m).size()) - long(edges(m).size()) + long(faces(m).size());
+    CHECK(euler == 0);
+  }
 }
 
 TEST_CASE("mesh of a narrow slot, a slit and slivers: plane by plane, the passage kept", "[applications][mesh]")

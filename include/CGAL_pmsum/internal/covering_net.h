@@ -16,7 +16,9 @@
 // narrower than d/2, such as a narrow tunnel's wall). Both are kept,
 // closer than d/2 to each other: a reconstruction needs points on both sides, and covering
 // only needs more points. No normal (unknown) faces none. Two points within the rounding
-// margin below of each other are one point: the first covers the other whatever they face.
+// margin (next paragraph) of each other are one point: the first covers the other whatever
+// they face; a trim point to be kept whatever is near (covers_within() with r = 0) is
+// covered by such a point only.
 //
 // Distances are computed in double on rounded positions, with a margin that makes both
 // promises hold for the exact points: a candidate counts as covered only if its exact
@@ -85,10 +87,10 @@ public:
   }
 
   /// Is a point of the net that does not face x closer than r <= d/2 to (the exact point
-  /// rounded to) x? `normals`: x's.
+  /// rounded to) x? `normals`: x's. With r = 0: is one within the rounding margin of x?
   bool covers_within(const Point3& x, double r, const Normals& normals = {}) const
   {
-    const double rr = r - m_margin;
+    const double rr = r > 0 ? r - m_margin : m_margin; // (r = 0: within the margin only)
     if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
     // Cells have side d: the ball of radius d/2 around x meets the cell of x and, along each
     // axis, the neighbour on the side of x's nearer face: 8 cells.
@@ -105,7 +107,7 @@ public:
         const Point3& y = m_points[n];
         const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
         const double squared = dx * dx + dy * dy + dz * dz; // (within the margin: one point)
-        if (squared < rr * rr && (squared <= m_margin * m_margin || !facing(m_normals[n], normals))) return true;
+        if (squared < rr * rr && (squared <= m_margin * m_margin || (r > 0 && !facing(m_normals[n], normals)))) return true;
       }
     }
     return false;

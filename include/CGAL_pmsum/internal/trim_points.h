@@ -22,6 +22,10 @@
 // that corner within d/2 of an output point. (Islands, pieces of F strictly inside one
 // cell, are bounded by trim curves only; they are not found this way but by the island
 // search, island_search.h, in the cells with an inside corner whose edges have no trim point.)
+//
+// Not needed for the covering, but for a mesh: where a strip of F narrower than d/2 meets
+// the border of F (a narrow tunnel's wall meeting the top face), the corner is a trim point
+// kept whatever is near (no other point stands for it); see find_trim_points().
 
 #ifndef CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
 #define CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
@@ -100,7 +104,7 @@ FT sum_coordinate(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const
 }
 
 /// A trim point found by a pair's search, with the radius within which an output point
-/// covers it.
+/// covers it (0: only a point within the net's rounding margin, covering_net.h).
 struct Trim_point
 {
   Sample p, q; // the segment's first end
@@ -137,6 +141,17 @@ public:
   bool is_own_candidate(std::size_t i) const
   { return i < m_last_row_start && interior(m_fp.p, m_p[i]) && interior(m_fp.q, m_q[i]); }
   const std::vector<std::array<std::uint32_t, 3>>& cells() const { return m_cells; }
+  /// Do lattice points i and j lie on one side of the facet (one border edge of its
+  /// parallelogram or triangle)?
+  bool on_border(std::size_t i, std::size_t j) const
+  {
+    auto shared_zero = [](const Feature& f, const Sample& a, const Sample& b) {
+      for (int k = 0; k < f.dimension + 1 && f.dimension > 0; ++k)
+        if (a.weights[k] == 0 && b.weights[k] == 0) return true;
+      return false;
+    };
+    return shared_zero(m_fp.p, m_p[i], m_p[j]) || shared_zero(m_fp.q, m_q[i], m_q[j]);
+  }
   /// Three corners of the whole facet (of its convex hull), not collinear: (P sample, Q sample).
   std::array<std::pair<Sample, Sample>, 3> facet_corners() const { return m_facet_corners; }
   /// Bound of the diameter of every cell.
@@ -337,14 +352,20 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     return Segment((std::min)(cell[k], cell[(k + 1) % 3]), (std::max)(cell[k], cell[(k + 1) % 3]));
   };
   std::vector<std::size_t> cells; // with a corner inside
-  std::map<Segment, bool> segments; // canonical order, each once: has it free parts?
+  struct Segment_info
+  {
+    bool has_ends = false;      // has it free parts?
+    bool narrow = false;        // one shorter than d/2?
+    std::uint32_t opposite = 0; // the third corner of a cell of the segment
+  };
+  std::map<Segment, Segment_info> segments; // canonical order, each once
   for (std::size_t i = 0; i < lattice.cells().size(); ++i) {
     const auto& cell = lattice.cells()[i];
     bool inside = false;
     for (std::uint32_t c : cell) inside = inside || corner(c).status == Corner::inside;
     if (!inside) continue;
     cells.push_back(i);
-    for (int k = 0; k < 3; ++k) segments.emplace(segment(cell, k), false);
+    for (int k = 0; k < 3; ++k) segments.emplace(segment(cell, k), Segment_info{false, false, cell[(k + 2) % 3]});
   }
   if (cells.empty()) return;
   std::vector<std::optional<Exact_point>> exact(lattice.size()); // lattice points, once each
@@ -369,29 +390,28 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
   const Direction* directions = pairs.directions.data() + fp.first_direction;
   const double radius = (std::max)(0., d - lattice.diameter());
   // The point of corner a plus trim (exact weights), with its origins and position.
-  auto add = [&](std::uint32_t a, Trim trim, const Point3& hidden) {
-    Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, radius, fp.first_direction, hidden};
+  auto add = [&](std::uint32_t a, Trim trim, const Point3& hidden, double covered_within) {
+    Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, covered_within, fp.first_direction, hidden};
     t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim, 0), P);
     t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim, 1), Q);
     for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
     out.push_back(std::move(t));
   };
-  std::vector<Segment_parameter> ends;
-  for (auto& [ab, has_ends] : segments) {
-    const auto [a, b] = ab;
-    const Corner_info &ca = corner(a), &cb = corner(b);
-    if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
-    if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, false)) continue;
-    const Translation_segment s(point(a), point(b));
-    ends.clear();
-    search.free_ends(s, directions, fp.number_of_directions, ends, {ca.witness, cb.witness});
-    has_ends = !ends.empty();
-    // (ends: first and last of each free part: the segment is hidden before a first end,
-    // after a last one. A free part shorter than d/2 crosses a strip of the facet narrower
-    // than that: its ends get their hidden sides, so that the net keeps both edges' points.)
+  // The ends of the free parts of segment ab (`ends`: first and last of each; the segment is
+  // hidden before a first end, after a last one), but those in `known`. A free part shorter
+  // than d/2 crosses a strip of the facet narrower than that: its ends get their hidden
+  // sides, so that the net keeps both edges' points; `pin`: and no other point covers them.
+  // Returns: was there such a free part?
+  auto add_ends = [&](std::uint32_t a, std::uint32_t b, const std::vector<Segment_parameter>& ends,
+                      const std::vector<Segment_parameter>& known, bool pin) {
+    if (ends.empty()) return false;
+    auto is_known = [&](const Segment_parameter& t) {
+      return std::any_of(known.begin(), known.end(), [&](const Segment_parameter& e) { return compare(e, t) == CGAL::ZERO; });
+    };
     Point3 forward = position(b) - position(a);
     const double length = std::sqrt(dot(forward, forward));
     forward = length > 0 ? scaled(forward, 1 / length) : Point3{0, 0, 0};
+    bool narrow = false;
     for (std::size_t k = 0; k < ends.size(); ++k) {
       if (k > 0 && compare(ends[k], ends[k - 1]) == CGAL::ZERO) continue; // an isolated free point
       const std::size_t other = k % 2 == 0 ? k + 1 : k - 1; // the other end of its free part
@@ -399,16 +419,56 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
         other < ends.size() ? std::abs(CGAL::to_double(ends[k].value()) - CGAL::to_double(ends[other].value())) * length
                             : d;
       const bool strip = width > 0 && width < d / 2;
+      narrow = narrow || strip;
+      // (a free part found again: nothing new; a known end: kept only as a narrow strip's corner)
+      const bool known_end = is_known(ends[k]);
+      if (known_end && (other >= ends.size() || is_known(ends[other]) || !(strip && pin))) continue;
       add(a, Trim{lattice.p(b), lattice.q(b), ends[k].value(), {}, {}, {}, {}, {}},
-          !strip ? Point3{0, 0, 0} : k % 2 == 0 ? scaled(forward, -1.) : forward);
+          !strip ? Point3{0, 0, 0} : k % 2 == 0 ? scaled(forward, -1.) : forward, strip && pin ? 0. : radius);
     }
+    return narrow;
+  };
+  std::vector<Segment_parameter> ends;
+  std::vector<std::pair<Segment, std::vector<Segment_parameter>>> border; // facet border segments with free parts
+  for (auto& [ab, info] : segments) {
+    const auto [a, b] = ab;
+    const Corner_info &ca = corner(a), &cb = corner(b);
+    if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
+    if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, false)) continue;
+    ends.clear();
+    search.free_ends(Translation_segment(point(a), point(b)), directions, fp.number_of_directions, ends,
+                     {ca.witness, cb.witness});
+    info.has_ends = !ends.empty();
+    info.narrow = add_ends(a, b, ends, {}, false);
+    if (info.has_ends && lattice.on_border(a, b)) border.emplace_back(ab, ends);
+  }
+  // On the facet's border, a segment may be free where the facet next to it is hidden (the
+  // border lies on another face of the boundary): seen from inside the facet, its free parts
+  // end where a trim curve meets the border. Where a strip narrower than d/2 enters the
+  // segment's cell through one other edge (and leaves through the border, not through the
+  // third edge), the strip's ends on the border are corners of the boundary that no other
+  // point stands for (a narrow tunnel's mouth): searched again from the facet's side (only
+  // where a free part is longer than a point: the side's free parts are within them), kept.
+  for (const auto& [ab, known] : border) {
+    const auto [a, b] = ab;
+    const std::uint32_t o = segments[ab].opposite;
+    if (segments[segment({a, b, o}, 1)].narrow == segments[segment({a, b, o}, 2)].narrow) continue;
+    bool longer = false;
+    for (std::size_t k = 0; k + 1 < known.size(); k += 2) longer = longer || compare(known[k], known[k + 1]) != CGAL::ZERO;
+    if (!longer) continue;
+    const Translation_segment s(point(a), point(b));
+    Vec3<Exact_nt> inward;
+    for (int c = 0; c < 3; ++c) inward[c] = point(o).X[c] * s.a.W - s.a.X[c] * point(o).W;
+    ends.clear();
+    search.free_ends(s, directions, fp.number_of_directions, ends, {corner(a).witness, corner(b).witness}, &inward);
+    add_ends(a, b, ends, known, true);
   }
   if (!islands) return;
   bool started = false;
   for (std::size_t i : cells) {
     const auto& cell = lattice.cells()[i];
     bool has_ends = false;
-    for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)];
+    for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)].has_ends;
     if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
     if (!started) {
       const auto facet = lattice.facet_corners();
@@ -421,7 +481,7 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
       islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])});
     if (w)
       add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}},
-          Point3{0, 0, 0});
+          Point3{0, 0, 0}, radius);
   }
 }
 
