@@ -127,7 +127,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       face_normals.push_back(output_normal<Epick>(mp, mq, direction));
       if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
       else normals.push_back(face_normals.back());
-    }, start);
+    }, start, level == 0 ? Strips::as_covering_needs : Strips::followed);
     start = Clock::now();
     ms.sum = stats;
     ms.seconds_sum += seconds_since(t_sum);
@@ -188,7 +188,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// of the sum lies closer than `d'` to it (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
 /// planes of the sum's faces; `Mesh_statistics::by_planes`); if that fails too, the sum is
-/// recomputed at `d/2`, then `d/4`; if every one fails,
+/// recomputed at `d/2`, then `d/4` (with more trim points: the edges of every face strip
+/// narrower than d/2 followed to the strip's ends); if every one fails,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
 /// Proved: every point of the exact boundary is closer than `d' + e` to the mesh, `e` the

@@ -134,6 +134,7 @@ struct Decision_context
   bool trim_points = true;             // search the trim curves of 2-dimensional pairs (trim_points.h)
   bool islands = true;                 // and the islands inside lattice cells (island_search.h)
   double d = 0;                        // the covering distance
+  Strips strips = Strips::as_covering_needs; // how far the trim search follows narrow strips
 
   /// The unit outward normals of the directions of pair fp (none if unknown): those of the
   /// pair's points, for the net.
@@ -286,7 +287,7 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
     for (int i = 0; i < 3; ++i) centre[i] = 0.5 * (lo[i] + hi[i]);
     return c.octree->certifies_ball(centre, 0.5 * std::sqrt(dot(hi - lo, hi - lo)));
   };
-  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, corner, certified, search, c.islands ? &islands : nullptr, out.trims);
+  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, c.strips, corner, certified, search, c.islands ? &islands : nullptr, out.trims);
   counters.island_cells += islands.searched_cells();
   counters.trim_segments += search.searched_segments();
   counters.trim_points += out.trims.size() - before;

@@ -324,6 +324,12 @@ private:
   double m_diameter = 0;
 };
 
+/// How far the trim search follows a strip of a facet narrower than d/2: where the covering
+/// needs it (cells with a corner known inside), or also through the cells with an untested
+/// corner, to the strip's ends (a mesh needs both edges' rows to where the strip meets
+/// another face; more points, and more searched segments, on sums with many narrow strips).
+enum class Strips : std::uint8_t { as_covering_needs, followed };
+
 /// What is known of a lattice point when the trim search starts: its status, and for an
 /// inside one, the item pair whose crossing decided it, or its certified octree leaf.
 enum class Corner : std::uint8_t { unknown, inside, free, covered };
@@ -337,13 +343,14 @@ struct Corner_info
 /// The trim points of a facet lattice (see the file comment): the free-part ends of the
 /// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
 /// point i, computing it if needed), then, with `islands`, an island point of each of those
-/// cells whose edges had none (island_search.h), appended to `out` in a canonical order. A segment or a cell is
+/// cells whose edges had none (island_search.h), appended to `out` in a canonical order
+/// (`strips`: see Strips). A segment or a cell is
 /// skipped without a search when `certified(lo, hi, ball)` tells that its bounding box is
 /// inside the sum (by octree leaves; `ball`: also by the certificate's balls, costlier, for
 /// cells), or a segment's ends lie in one certified octree leaf.
 template <class CornerInfo, class Certified>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
-                      const Candidate_pairs& pairs, const Feature_pair& fp, double d, const CornerInfo& corner,
+                      const Candidate_pairs& pairs, const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
                       const Certified& certified_box, Segment_search& search, Island_search* islands,
                       std::vector<Trim_point>& out)
 {
@@ -358,16 +365,39 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     bool narrow = false;        // one shorter than d/2?
     std::uint32_t opposite = 0; // the third corner of a cell of the segment
   };
-  std::map<Segment, Segment_info> segments; // canonical order, each once
-  for (std::size_t i = 0; i < lattice.cells().size(); ++i) {
+  std::map<Segment, Segment_info> segments; // each once
+  std::vector<Segment> to_search;            // in the order searched
+  std::vector<bool> searched_cell(lattice.cells().size(), false);
+  auto search_cell = [&](std::size_t i) {
     const auto& cell = lattice.cells()[i];
-    bool inside = false;
-    for (std::uint32_t c : cell) inside = inside || corner(c).status == Corner::inside;
-    if (!inside) continue;
+    searched_cell[i] = true;
     cells.push_back(i);
-    for (int k = 0; k < 3; ++k) segments.emplace(segment(cell, k), Segment_info{false, false, cell[(k + 2) % 3]});
+    for (int k = 0; k < 3; ++k)
+      if (segments.emplace(segment(cell, k), Segment_info{false, false, cell[(k + 2) % 3]}).second)
+        to_search.push_back(segment(cell, k));
+  };
+  for (std::size_t i = 0; i < lattice.cells().size(); ++i) {
+    bool inside = false;
+    for (std::uint32_t c : lattice.cells()[i]) inside = inside || corner(c).status == Corner::inside;
+    if (inside) search_cell(i);
   }
   if (cells.empty()) return;
+  std::sort(to_search.begin(), to_search.end()); // canonical order
+  // The cells of each segment (two at most), made when a strip is first followed.
+  std::map<Segment, std::array<std::uint32_t, 2>> cells_of;
+  auto follow = [&](const Segment& ab) {
+    if (cells_of.empty())
+      for (std::size_t i = 0; i < lattice.cells().size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+          auto [it, added] = cells_of.emplace(segment(lattice.cells()[i], k), std::array<std::uint32_t, 2>{std::uint32_t(i), std::uint32_t(i)});
+          if (!added) it->second[1] = std::uint32_t(i);
+        }
+    for (std::uint32_t i : cells_of[ab]) {
+      bool covered = false; // (untested: maybe inside)
+      for (std::uint32_t c : lattice.cells()[i]) covered = covered || corner(c).status == Corner::covered;
+      if (!searched_cell[i] && covered) search_cell(i);
+    }
+  };
   std::vector<std::optional<Exact_point>> exact(lattice.size()); // lattice points, once each
   auto point = [&](std::uint32_t k) -> const Exact_point& {
     if (!exact[k]) exact[k] = exact_sum(P, lattice.p(k), Q, lattice.q(k));
@@ -430,7 +460,9 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
   };
   std::vector<Segment_parameter> ends;
   std::vector<std::pair<Segment, std::vector<Segment_parameter>>> border; // facet border segments with free parts
-  for (auto& [ab, info] : segments) {
+  for (std::size_t n = 0; n < to_search.size(); ++n) {
+    const Segment ab = to_search[n];
+    Segment_info& info = segments[ab];
     const auto [a, b] = ab;
     const Corner_info &ca = corner(a), &cb = corner(b);
     if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
@@ -441,6 +473,9 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
     info.has_ends = !ends.empty();
     info.narrow = add_ends(a, b, ends, {}, false);
     if (info.has_ends && lattice.on_border(a, b)) border.emplace_back(ab, ends);
+    // Followed (Strips): a strip narrower than d/2 into the cells on both sides of the
+    // segment with an untested corner, which the covering does not need.
+    if (info.narrow && strips == Strips::followed) follow(ab);
   }
   // On the facet's border, a segment may be free where the facet next to it is hidden (the
   // border lies on another face of the boundary): seen from inside the facet, its free parts
