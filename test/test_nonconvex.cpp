@@ -1,6 +1,7 @@
 // Non-convex, non-manifold and open operands with exactly known sums, and the filters.
 #include "test_support.h"
 #include <CGAL_pmsum/internal/segment_search.h>
+#include "suite_shapes.h"
 
 #include <catch2/catch.hpp>
 
@@ -374,6 +375,73 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
   INFO(in << " certainly crossing, " << out << " certainly not");
   CHECK(in > 100);   // the ranges decide both ways, often
   CHECK(out > 1000);
+}
+
+TEST_CASE("on a small grid, double arithmetic decides the predicates as exact arithmetic does", "[filters][exact]")
+{
+  // Where all coordinates are on a small power-of-two grid (Cd_geometry::exact_doubles), the
+  // CD filter evaluates D(0) and g of its predicates in double arithmetic and their sign at x
+  // as S D(0) + g.X. Same answers as the exact determinant, at contacts (translations that
+  // are sums of vertices: every predicate of a touching pair is zero there) and along
+  // segments between them (the segment search's roots).
+  using namespace CGAL::Pmsum::internal;
+  using Points = std::vector<std::array<double, 3>>;
+  const Points quarters = {{0, 0.25, 3.5}, {-2, 0.75, 1}}, tenth = {{0.1, 0, 0}};
+  const Points wide = {{1, 0, 0}, {0x1p-20, 0, 0}}, widest_small = {{32767, 0, 0}, {1, 0, 0}},
+               too_wide = {{32768, 0, 0}, {1, 0, 0}}, huge = {{0x1p400, 0, 0}};
+  CHECK(on_small_grid({&quarters}));
+  CHECK(on_small_grid({&widest_small}));
+  CHECK(!on_small_grid({&quarters, &widest_small})); // 32767 is 2^17 quarters
+  CHECK(!on_small_grid({&quarters, &tenth}));
+  CHECK(!on_small_grid({&wide}));
+  CHECK(!on_small_grid({&too_wide}));
+  CHECK(!on_small_grid({&huge}));
+
+  const auto [hook_a, hook_b] = pmsum_shapes::hooks_pair();
+  const std::vector<std::pair<Soup, Soup>> cases = {
+    {l_shape(), tetrahedron(0.75)}, {hook_a, hook_b}, {tunnel_block(), box({0, 0, 0}, {1, 1, 1})}};
+  CGAL::Random rng(5);
+  std::size_t free_contacts = 0, inside = 0, segments = 0, ends_found = 0;
+  for (const auto& [ps, qs] : cases) {
+    const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
+    Mesh_descriptors<Mesh> dp, dq;
+    const Mesh_data P = make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp);
+    const Mesh_data Q = make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq);
+    const Cd_geometry doubles(P, Q);
+    Cd_geometry exact(P, Q);
+    REQUIRE(doubles.exact_doubles);
+    exact.exact_doubles = false;
+    Cd_filter fd(&doubles), fe(&exact);
+    auto contact = [&] { // a sum of vertices (P is negated: a difference of the input's)
+      const auto& a = P.points[std::size_t(rng.get_int(0, int(P.points.size())))];
+      const auto& b = Q.points[std::size_t(rng.get_int(0, int(Q.points.size())))];
+      return std::array<double, 3>{a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+    };
+    for (int k = 0; k < 300; ++k) {
+      const auto t = contact();
+      const bool is_free = fd.is_free_at(t);
+      CHECK(is_free == fe.is_free_at(t));
+      (is_free ? free_contacts : inside) += 1;
+    }
+    Segment_search sd(fd), se(fe);
+    for (int k = 0; k < 60; ++k) {
+      const auto a = contact(), b = contact();
+      if (a == b) continue;
+      const Translation_segment s({to_nt<Exact_nt>(a), Exact_nt(1)}, {to_nt<Exact_nt>(b), Exact_nt(1)});
+      std::vector<Segment_parameter> ed, ee;
+      sd.free_ends(s, nullptr, 0, ed);
+      se.free_ends(s, nullptr, 0, ee);
+      REQUIRE(ed.size() == ee.size());
+      for (std::size_t i = 0; i < ed.size(); ++i) CHECK(compare(ed[i], ee[i]) == CGAL::ZERO);
+      ++segments;
+      ends_found += ed.size();
+    }
+  }
+  INFO(free_contacts << " free contacts, " << inside << " inside, " << segments << " segments, " << ends_found << " ends");
+  WARN(free_contacts << " free contacts, " << inside << " inside, " << segments << " segments, " << ends_found << " ends");
+  CHECK(free_contacts > 100);
+  CHECK(inside > 100);
+  CHECK(ends_found > 50);
 }
 
 // --- Ranks (named parameter `communicator`): threads stand for the processes. ------------

@@ -16,8 +16,13 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/enum.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Pmsum {
@@ -61,10 +66,38 @@ inline NT int_nt(std::int64_t i) { return NT(static_cast<long>(i)); }
 template <>
 inline Interval int_nt<Interval>(std::int64_t i) { return Interval(static_cast<double>(i)) ; }
 
+/// Are all coordinates of these points integer multiples of one power of two 2^e, below
+/// 2^15 2^e in absolute value (as in most CAD models: few significant bits), with
+/// |e| <= 300? Then, in units of powers of 2^e, every step of the orientation determinant of
+/// four of them is an integer below 2^53 (differences below 2^16, cross products below
+/// 2^33, the determinant below 3 2^49), and so is every step of its gradient for shifts in
+/// {-1, 0, 1} (below 6 2^33); and 2^3e neither underflows nor overflows: their evaluation in
+/// double arithmetic is exact.
+inline bool on_small_grid(std::initializer_list<const std::vector<std::array<double, 3>>*> point_sets)
+{
+  int low = std::numeric_limits<int>::max(); // exponent of the grid
+  double largest = 0;
+  for (const auto* points : point_sets)
+    for (const auto& p : *points)
+      for (double x : p) {
+        if (x == 0) continue;
+        if (!std::isfinite(x)) return false;
+        int exponent;
+        const double m = std::frexp(std::abs(x), &exponent); // |x| = m 2^exponent, m in [1/2, 1)
+        std::uint64_t mantissa = static_cast<std::uint64_t>(std::ldexp(m, 53));
+        int lowest = exponent - 53;
+        while ((mantissa & 1) == 0) { mantissa >>= 1; ++lowest; }
+        low = (std::min)(low, lowest);
+        largest = (std::max)(largest, std::abs(x));
+      }
+  return largest == 0 || (low >= -300 && low <= 300 && largest < std::ldexp(1.0, low + 15));
+}
+
 /// Sign of `f(NT{})`, where `f` is a generic callable computing a polynomial expression in
-/// the number type it is called with. The result is exact.
-template <class F>
-CGAL::Sign filtered_sign(const F& f)
+/// the number type it is called with, from its interval evaluation if that decides, else
+/// from `exact()`, which returns the exact sign.
+template <class F, class E>
+CGAL::Sign filtered_sign(const F& f, const E& exact)
 {
   {
     CGAL::Protect_FPU_rounding<true> guard;
@@ -73,8 +106,13 @@ CGAL::Sign filtered_sign(const F& f)
     if (r.sup() < 0) return CGAL::NEGATIVE;
     if (r.inf() == 0 && r.sup() == 0) return CGAL::ZERO;
   }
-  return CGAL::sign(f(Exact_nt()));
+  return exact();
 }
+
+/// The same, with f evaluated in Exact_nt where intervals do not decide. The result is exact.
+template <class F>
+CGAL::Sign filtered_sign(const F& f)
+{ return filtered_sign(f, [&] { return CGAL::sign(f(Exact_nt())); }); }
 
 } // namespace internal
 } // namespace Pmsum

@@ -291,8 +291,7 @@ private:
                   const Moving_point& c, const Moving_point& d) const
   {
     CGAL::Protect_FPU_rounding<true> guard;
-    const Interval d0 = value_at_origin<Interval>(a, b, c, d);
-    const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
+    const auto [d0, g] = m_filter.affine_enclosure(a, b, c, d);
     for (std::uint32_t k : leaves) {
       bool positive = true, negative = true;
       for (const Vec3<Interval>& x : m_leaves[k].cell.e) {
@@ -314,12 +313,11 @@ private:
   bool search_line(const std::array<Exact_point, 3>& corners, const Pair& pair, const std::vector<std::uint32_t>& pairs,
                    const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d)
   {
-    const Exact_nt d0 = value_at_origin<Exact_nt>(a, b, c, d);
-    const Vec3<Exact_nt> g = gradient<Exact_nt>(a, b, c, d);
+    const Affine_predicate f = m_filter.affine_form(a, b, c, d);
     std::array<Exact_nt, 3> D; // W times the predicate at corner k (a common W)
     std::array<CGAL::Sign, 3> s;
     for (int k = 0; k < 3; ++k) {
-      D[k] = corners[k].W * d0 + dot(g, corners[k].X);
+      D[k] = corners[k].W * f.d0 + dot(f.g, corners[k].X);
       s[k] = CGAL::sign(D[k]);
     }
     if (s[0] == CGAL::ZERO && s[1] == CGAL::ZERO && s[2] == CGAL::ZERO) return false; // constant on the plane

@@ -194,6 +194,8 @@ Vec3<NT> orientation_gradient(const std::array<Vec3<NT>, 4>& p, const std::array
 ///  - `template <class G> CGAL::Sign perturbation_sign(const G& g)`: the sign of the first
 ///    non-zero g(nt).v_i over its chain (g a generic callable, as in filtered_sign());
 ///  - `Point fixed_point(const std::array<double, 3>& x)`: a point of a static mesh at x.
+/// It may provide `unperturbed_orientation(a, b, c, d, value)`, hiding the one here, where it
+/// has a cheaper exact evaluation of the orientation at delta = 0.
 template <class Derived, class Point>
 class Perturbed_predicates
 {
@@ -201,12 +203,13 @@ public:
   /// Sign of orient3d(a, b, c, d) = det[b - a, c - a, d - a], perturbed.
   CGAL::Sign orientation(const Point& a, const Point& b, const Point& c, const Point& d)
   {
-    const CGAL::Sign s0 = filtered_sign([&](auto nt) {
+    const auto value = [&](auto nt) {
       using NT = decltype(nt);
       const Vec3<NT> pa = self().template position<NT>(a);
       return dot(self().template position<NT>(d) - pa,
                  cross(self().template position<NT>(b) - pa, self().template position<NT>(c) - pa));
-    });
+    };
+    const CGAL::Sign s0 = self().unperturbed_orientation(a, b, c, d, value);
     if (s0 != CGAL::ZERO) return s0;
     return self().perturbation_sign([&](auto nt) {
       using NT = decltype(nt);
@@ -260,6 +263,11 @@ public:
     solid.tree.traversal(0, traversal);
     return odd;
   }
+
+  /// Exact sign of orient3d(a, b, c, d) at delta = 0, `value` its generic expression.
+  template <class F>
+  CGAL::Sign unperturbed_orientation(const Point&, const Point&, const Point&, const Point&, const F& value)
+  { return filtered_sign(value); }
 
 private:
   Derived& self() { return static_cast<Derived&>(*this); }

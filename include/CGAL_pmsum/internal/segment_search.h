@@ -316,16 +316,14 @@ private:
       // D(x) = D(0) + g.x at the ends: no root inside if both certainly have the same sign.
       {
         CGAL::Protect_FPU_rounding<true> guard;
-        const Interval d0 = value_at_origin<Interval>(a, b, c, d);
-        const Vec3<Interval> g = gradient<Interval>(a, b, c, d);
+        const auto [d0, g] = m_filter.affine_enclosure(a, b, c, d);
         const Interval da = d0 + dot(g, m_a), db = d0 + dot(g, m_b);
         if ((da.inf() > 0 && db.inf() > 0) || (da.sup() < 0 && db.sup() < 0)) return;
         if ((da.inf() == 0 && da.sup() == 0) || (db.inf() == 0 && db.sup() == 0)) return; // zero at an end
       }
       // W D(a) and W D(b), exactly; the root is l = D(a) / (D(a) - D(b)).
-      const Exact_nt d0 = value_at_origin<Exact_nt>(a, b, c, d);
-      const Vec3<Exact_nt> g = gradient<Exact_nt>(a, b, c, d);
-      const Exact_nt da = s.a.W * d0 + dot(g, s.a.X), db = s.b.W * d0 + dot(g, s.b.X);
+      const Affine_predicate f = m_filter.affine_form(a, b, c, d);
+      const Exact_nt da = s.a.W * f.d0 + dot(f.g, s.a.X), db = s.b.W * f.d0 + dot(f.g, s.b.X);
       const CGAL::Sign sa = CGAL::sign(da), sb = CGAL::sign(db);
       if (sa == sb || sa == CGAL::ZERO || sb == CGAL::ZERO) return; // no root strictly inside
       Segment_parameter l{da, da - db};
