@@ -31,6 +31,16 @@ std::size_t count_in(const std::vector<IK::Point_3>& pts, const Point& lo, const
   return n;
 }
 
+/// P (negated) and Q as the CD filter takes them.
+std::pair<CGAL::Pmsum::internal::Mesh_data, CGAL::Pmsum::internal::Mesh_data> cd_operands(const Soup& ps, const Soup& qs)
+{
+  using namespace CGAL::Pmsum::internal;
+  const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
+  Mesh_descriptors<Mesh> dp, dq;
+  return {make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp),
+          make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq)};
+}
+
 } // namespace
 
 TEST_CASE("L-shape + cube is a union of two boxes", "[nonconvex]")
@@ -332,10 +342,8 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
   CGAL::Random rng(11);
   std::size_t in = 0, out = 0, tested = 0;
   for (const auto& [ps, qs] : cases) {
-    const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
-    Mesh_descriptors<Mesh> dp, dq;
-    const Mesh_data P = make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp);
-    const Mesh_data Q = make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq);
+    const auto operands = cd_operands(ps, qs);
+    const Mesh_data &P = operands.first, &Q = operands.second;
     const Cd_geometry geometry(P, Q);
     Cd_filter filter(&geometry);
     const auto bp = mesh_box(P), bq = mesh_box(Q);
@@ -403,10 +411,8 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
   CGAL::Random rng(5);
   std::size_t free_contacts = 0, inside = 0, segments = 0, ends_found = 0;
   for (const auto& [ps, qs] : cases) {
-    const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
-    Mesh_descriptors<Mesh> dp, dq;
-    const Mesh_data P = make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp);
-    const Mesh_data Q = make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq);
+    const auto operands = cd_operands(ps, qs);
+    const Mesh_data &P = operands.first, &Q = operands.second;
     const Cd_geometry doubles(P, Q);
     Cd_geometry exact(P, Q);
     REQUIRE(doubles.exact_doubles);
@@ -438,7 +444,6 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
     }
   }
   INFO(free_contacts << " free contacts, " << inside << " inside, " << segments << " segments, " << ends_found << " ends");
-  WARN(free_contacts << " free contacts, " << inside << " inside, " << segments << " segments, " << ends_found << " ends");
   CHECK(free_contacts > 100);
   CHECK(inside > 100);
   CHECK(ends_found > 50);
