@@ -25,7 +25,7 @@
 //
 // Not needed for the covering, but for a mesh: where a strip of F narrower than d/2 meets
 // the border of F (a narrow tunnel's wall meeting the top face), the corner is a trim point
-// kept whatever is near (no other point stands for it); see find_trim_points().
+// kept whatever is near (no other point stands for it); see Facet_trim_search::search_border_corners().
 
 #ifndef CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
 #define CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
@@ -340,6 +340,242 @@ struct Corner_info
   std::optional<std::uint64_t> leaf;
 };
 
+/// The trim search of one facet lattice, stage by stage (find_trim_points() runs them): the
+/// cells with a corner `inside` and their segments; the segments' free parts (following
+/// narrow strips, with Strips::followed); the corners where narrow strips meet the facet's
+/// border; the islands. Trim points are appended to `out` in a canonical order.
+template <class CornerInfo, class Certified>
+class Facet_trim_search
+{
+public:
+  Facet_trim_search(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q, const Candidate_pairs& pairs,
+                    const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
+                    const Certified& certified_box, Segment_search& search, std::vector<Trim_point>& out)
+    : m_lattice(lattice), m_p(P), m_q(Q), m_fp(fp), m_d(d), m_strips(strips), m_corner(corner),
+      m_certified_box(certified_box), m_search(search), m_out(out),
+      m_directions(pairs.directions.data() + fp.first_direction),
+      m_radius((std::max)(0., d - lattice.diameter())), m_searched_cell(lattice.cells().size(), false),
+      m_exact(lattice.size()), m_rounded(lattice.size())
+  {}
+
+  /// Selects the cells with a corner inside and their segments, in a canonical order.
+  /// Returns: is there any?
+  bool select_cells()
+  {
+    for (std::size_t i = 0; i < m_lattice.cells().size(); ++i) {
+      bool inside = false;
+      for (std::uint32_t c : m_lattice.cells()[i]) inside = inside || m_corner(c).status == Corner::inside;
+      if (inside) search_cell(i);
+    }
+    std::sort(m_to_search.begin(), m_to_search.end());
+    return !m_cells.empty();
+  }
+
+  /// The free parts of the selected segments (and of those of the cells added by following
+  /// narrow strips, Strips::followed), each searched once.
+  void search_segments()
+  {
+    std::vector<Segment_parameter> ends;
+    for (std::size_t n = 0; n < m_to_search.size(); ++n) {
+      const Segment ab = m_to_search[n];
+      Segment_info& info = m_segments[ab];
+      const auto [a, b] = ab;
+      const Corner_info &ca = m_corner(a), &cb = m_corner(b);
+      if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
+      if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, false)) continue;
+      ends.clear();
+      m_search.free_ends(Translation_segment(point(a), point(b)), m_directions, m_fp.number_of_directions, ends,
+                         {ca.witness, cb.witness});
+      info.has_ends = !ends.empty();
+      info.narrow = add_ends(a, b, ends, {}, false);
+      if (info.has_ends && m_lattice.on_border(a, b)) m_border.emplace_back(ab, ends);
+      // Followed (Strips): a strip narrower than d/2 into the cells on both sides of the
+      // segment with an untested corner, which the covering does not need.
+      if (info.narrow && m_strips == Strips::followed) follow(ab);
+    }
+  }
+
+  /// On the facet's border, a segment may be free where the facet next to it is hidden (the
+  /// border lies on another face of the boundary): seen from inside the facet, its free parts
+  /// end where a trim curve meets the border. Where a strip narrower than d/2 enters the
+  /// segment's cell through one other edge (and leaves through the border, not through the
+  /// third edge), the strip's ends on the border are corners of the boundary that no other
+  /// point stands for (a narrow tunnel's mouth): searched again from the facet's side (only
+  /// where a free part is longer than a point: the side's free parts are within them), kept.
+  void search_border_corners()
+  {
+    std::vector<Segment_parameter> ends;
+    for (const auto& [ab, known] : m_border) {
+      const auto [a, b] = ab;
+      const std::uint32_t o = m_segments[ab].opposite;
+      if (m_segments[segment({a, b, o}, 1)].narrow == m_segments[segment({a, b, o}, 2)].narrow) continue;
+      bool longer = false;
+      for (std::size_t k = 0; k + 1 < known.size(); k += 2) longer = longer || compare(known[k], known[k + 1]) != CGAL::ZERO;
+      if (!longer) continue;
+      const Translation_segment s(point(a), point(b));
+      Vec3<Exact_nt> inward;
+      for (int c = 0; c < 3; ++c) inward[c] = point(o).X[c] * s.a.W - s.a.X[c] * point(o).W;
+      ends.clear();
+      m_search.free_ends(s, m_directions, m_fp.number_of_directions, ends, {m_corner(a).witness, m_corner(b).witness},
+                         &inward);
+      add_ends(a, b, ends, known, true);
+    }
+  }
+
+  /// An island point of each selected cell whose edges have no free part.
+  void search_islands(Island_search& islands)
+  {
+    bool started = false;
+    for (std::size_t i : m_cells) {
+      const auto& cell = m_lattice.cells()[i];
+      bool has_ends = false;
+      for (int k = 0; k < 3; ++k) has_ends = has_ends || m_segments[segment(cell, k)].has_ends;
+      if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
+      if (!started) {
+        const auto facet = m_lattice.facet_corners();
+        std::array<Exact_point, 3> F;
+        for (int k = 0; k < 3; ++k) F[k] = exact_sum(m_p, facet[k].first, m_q, facet[k].second);
+        islands.start_facet(F, m_directions, m_fp.number_of_directions);
+        started = true;
+      }
+      const std::optional<Cell_weights> w = islands.island_point({point(cell[0]), point(cell[1]), point(cell[2])});
+      if (w)
+        add(cell[0],
+            Trim{m_lattice.p(cell[1]), m_lattice.q(cell[1]), (*w)[1], m_lattice.p(cell[2]), m_lattice.q(cell[2]), (*w)[2], {}, {}},
+            Point3{0, 0, 0}, m_radius);
+    }
+  }
+
+private:
+  using Segment = std::pair<std::uint32_t, std::uint32_t>;
+  struct Segment_info
+  {
+    bool has_ends = false;      // has it free parts?
+    bool narrow = false;        // one shorter than d/2?
+    std::uint32_t opposite = 0; // the third corner of a cell of the segment
+  };
+
+  static Segment segment(const std::array<std::uint32_t, 3>& cell, int k)
+  { return Segment((std::min)(cell[k], cell[(k + 1) % 3]), (std::max)(cell[k], cell[(k + 1) % 3])); }
+
+  /// Selects cell i: its new segments are searched after those already selected.
+  void search_cell(std::size_t i)
+  {
+    const auto& cell = m_lattice.cells()[i];
+    m_searched_cell[i] = true;
+    m_cells.push_back(i);
+    for (int k = 0; k < 3; ++k)
+      if (m_segments.emplace(segment(cell, k), Segment_info{false, false, cell[(k + 2) % 3]}).second)
+        m_to_search.push_back(segment(cell, k));
+  }
+
+  /// Selects the cells of segment ab with an untested (maybe inside) corner. The cells of
+  /// each segment (two at most) are listed when a strip is first followed.
+  void follow(const Segment& ab)
+  {
+    if (m_cells_of.empty())
+      for (std::size_t i = 0; i < m_lattice.cells().size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+          auto [it, added] = m_cells_of.emplace(segment(m_lattice.cells()[i], k),
+                                                std::array<std::uint32_t, 2>{std::uint32_t(i), std::uint32_t(i)});
+          if (!added) it->second[1] = std::uint32_t(i);
+        }
+    for (std::uint32_t i : m_cells_of[ab]) {
+      bool covered = false;
+      for (std::uint32_t c : m_lattice.cells()[i]) covered = covered || m_corner(c).status == Corner::covered;
+      if (!m_searched_cell[i] && covered) search_cell(i);
+    }
+  }
+
+  /// Lattice point k, exactly and rounded (each computed once).
+  const Exact_point& point(std::uint32_t k)
+  {
+    if (!m_exact[k]) m_exact[k] = exact_sum(m_p, m_lattice.p(k), m_q, m_lattice.q(k));
+    return *m_exact[k];
+  }
+  const Point3& position(std::uint32_t k)
+  {
+    if (!m_rounded[k]) m_rounded[k] = m_lattice.position(k, m_p, m_q);
+    return *m_rounded[k];
+  }
+
+  /// Is the bounding box of these lattice points certified inside the sum?
+  bool certified(std::initializer_list<std::uint32_t> corners, bool ball)
+  {
+    Point3 lo = position(*corners.begin()), hi = lo;
+    for (std::uint32_t k : corners)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = (std::min)(lo[c], position(k)[c]);
+        hi[c] = (std::max)(hi[c], position(k)[c]);
+      }
+    return m_certified_box(lo, hi, ball);
+  }
+
+  /// Outputs the point of corner a plus trim (exact weights), with its origins and position.
+  void add(std::uint32_t a, Trim trim, const Point3& hidden, double covered_within)
+  {
+    Trim_point t{m_lattice.p(a), m_lattice.q(a), std::move(trim), {}, covered_within, m_fp.first_direction, hidden};
+    t.trim.origin_p = m_lattice.origin(0, trim_weights(t.p, t.trim, 0), m_p);
+    t.trim.origin_q = m_lattice.origin(1, trim_weights(t.q, t.trim, 1), m_q);
+    for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(m_p, m_q, t.p, t.q, &t.trim, c);
+    m_out.push_back(std::move(t));
+  }
+
+  /// Outputs the ends of the free parts of segment ab (`ends`: first and last of each; the
+  /// segment is hidden before a first end, after a last one), but those in `known`. A free
+  /// part shorter than d/2 crosses a strip of the facet narrower than that: its ends get
+  /// their hidden sides, so that the net keeps both edges' points; `pin`: and no other point
+  /// covers them. Returns: was there such a free part?
+  bool add_ends(std::uint32_t a, std::uint32_t b, const std::vector<Segment_parameter>& ends,
+                const std::vector<Segment_parameter>& known, bool pin)
+  {
+    if (ends.empty()) return false;
+    auto is_known = [&](const Segment_parameter& t) {
+      return std::any_of(known.begin(), known.end(), [&](const Segment_parameter& e) { return compare(e, t) == CGAL::ZERO; });
+    };
+    Point3 forward = position(b) - position(a);
+    const double length = std::sqrt(dot(forward, forward));
+    forward = length > 0 ? scaled(forward, 1 / length) : Point3{0, 0, 0};
+    bool narrow = false;
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+      if (k > 0 && compare(ends[k], ends[k - 1]) == CGAL::ZERO) continue; // an isolated free point
+      const std::size_t other = k % 2 == 0 ? k + 1 : k - 1; // the other end of its free part
+      const double width =
+        other < ends.size() ? std::abs(CGAL::to_double(ends[k].value()) - CGAL::to_double(ends[other].value())) * length
+                            : m_d;
+      const bool strip = width > 0 && width < m_d / 2;
+      narrow = narrow || strip;
+      // (a free part found again: nothing new; a known end: kept only as a narrow strip's corner)
+      const bool known_end = is_known(ends[k]);
+      if (known_end && (other >= ends.size() || is_known(ends[other]) || !(strip && pin))) continue;
+      add(a, Trim{m_lattice.p(b), m_lattice.q(b), ends[k].value(), {}, {}, {}, {}, {}},
+          !strip ? Point3{0, 0, 0} : k % 2 == 0 ? scaled(forward, -1.) : forward, strip && pin ? 0. : m_radius);
+    }
+    return narrow;
+  }
+
+  const Facet_lattice& m_lattice;
+  const Mesh_data& m_p;
+  const Mesh_data& m_q;
+  const Feature_pair& m_fp;
+  double m_d;
+  Strips m_strips;
+  const CornerInfo& m_corner;
+  const Certified& m_certified_box;
+  Segment_search& m_search;
+  std::vector<Trim_point>& m_out;
+  const Direction* m_directions;
+  double m_radius; // within which an output point covers a trim point
+  std::vector<std::size_t> m_cells;                    // selected, in order
+  std::vector<bool> m_searched_cell;                   // selected?
+  std::map<Segment, Segment_info> m_segments;          // of the selected cells, each once
+  std::vector<Segment> m_to_search;                    // in the order searched
+  std::map<Segment, std::array<std::uint32_t, 2>> m_cells_of; // (follow())
+  std::vector<std::pair<Segment, std::vector<Segment_parameter>>> m_border; // border segments with free parts
+  std::vector<std::optional<Exact_point>> m_exact;     // lattice points
+  std::vector<std::optional<Point3>> m_rounded;
+};
+
 /// The trim points of a facet lattice (see the file comment): the free-part ends of the
 /// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
 /// point i, computing it if needed), then, with `islands`, an island point of each of those
@@ -354,170 +590,11 @@ void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Me
                       const Certified& certified_box, Segment_search& search, Island_search* islands,
                       std::vector<Trim_point>& out)
 {
-  using Segment = std::pair<std::uint32_t, std::uint32_t>;
-  auto segment = [](const std::array<std::uint32_t, 3>& cell, int k) {
-    return Segment((std::min)(cell[k], cell[(k + 1) % 3]), (std::max)(cell[k], cell[(k + 1) % 3]));
-  };
-  std::vector<std::size_t> cells; // with a corner inside
-  struct Segment_info
-  {
-    bool has_ends = false;      // has it free parts?
-    bool narrow = false;        // one shorter than d/2?
-    std::uint32_t opposite = 0; // the third corner of a cell of the segment
-  };
-  std::map<Segment, Segment_info> segments; // each once
-  std::vector<Segment> to_search;            // in the order searched
-  std::vector<bool> searched_cell(lattice.cells().size(), false);
-  auto search_cell = [&](std::size_t i) {
-    const auto& cell = lattice.cells()[i];
-    searched_cell[i] = true;
-    cells.push_back(i);
-    for (int k = 0; k < 3; ++k)
-      if (segments.emplace(segment(cell, k), Segment_info{false, false, cell[(k + 2) % 3]}).second)
-        to_search.push_back(segment(cell, k));
-  };
-  for (std::size_t i = 0; i < lattice.cells().size(); ++i) {
-    bool inside = false;
-    for (std::uint32_t c : lattice.cells()[i]) inside = inside || corner(c).status == Corner::inside;
-    if (inside) search_cell(i);
-  }
-  if (cells.empty()) return;
-  std::sort(to_search.begin(), to_search.end()); // canonical order
-  // The cells of each segment (two at most), made when a strip is first followed.
-  std::map<Segment, std::array<std::uint32_t, 2>> cells_of;
-  auto follow = [&](const Segment& ab) {
-    if (cells_of.empty())
-      for (std::size_t i = 0; i < lattice.cells().size(); ++i)
-        for (int k = 0; k < 3; ++k) {
-          auto [it, added] = cells_of.emplace(segment(lattice.cells()[i], k), std::array<std::uint32_t, 2>{std::uint32_t(i), std::uint32_t(i)});
-          if (!added) it->second[1] = std::uint32_t(i);
-        }
-    for (std::uint32_t i : cells_of[ab]) {
-      bool covered = false; // (untested: maybe inside)
-      for (std::uint32_t c : lattice.cells()[i]) covered = covered || corner(c).status == Corner::covered;
-      if (!searched_cell[i] && covered) search_cell(i);
-    }
-  };
-  std::vector<std::optional<Exact_point>> exact(lattice.size()); // lattice points, once each
-  auto point = [&](std::uint32_t k) -> const Exact_point& {
-    if (!exact[k]) exact[k] = exact_sum(P, lattice.p(k), Q, lattice.q(k));
-    return *exact[k];
-  };
-  std::vector<std::optional<Point3>> rounded(lattice.size()); // the same, rounded
-  auto position = [&](std::uint32_t k) -> const Point3& {
-    if (!rounded[k]) rounded[k] = lattice.position(k, P, Q);
-    return *rounded[k];
-  };
-  auto certified = [&](std::initializer_list<std::uint32_t> corners, bool ball) {
-    Point3 lo = position(*corners.begin()), hi = lo;
-    for (std::uint32_t k : corners)
-      for (int c = 0; c < 3; ++c) {
-        lo[c] = (std::min)(lo[c], position(k)[c]);
-        hi[c] = (std::max)(hi[c], position(k)[c]);
-      }
-    return certified_box(lo, hi, ball);
-  };
-  const Direction* directions = pairs.directions.data() + fp.first_direction;
-  const double radius = (std::max)(0., d - lattice.diameter());
-  // The point of corner a plus trim (exact weights), with its origins and position.
-  auto add = [&](std::uint32_t a, Trim trim, const Point3& hidden, double covered_within) {
-    Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, covered_within, fp.first_direction, hidden};
-    t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim, 0), P);
-    t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim, 1), Q);
-    for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
-    out.push_back(std::move(t));
-  };
-  // The ends of the free parts of segment ab (`ends`: first and last of each; the segment is
-  // hidden before a first end, after a last one), but those in `known`. A free part shorter
-  // than d/2 crosses a strip of the facet narrower than that: its ends get their hidden
-  // sides, so that the net keeps both edges' points; `pin`: and no other point covers them.
-  // Returns: was there such a free part?
-  auto add_ends = [&](std::uint32_t a, std::uint32_t b, const std::vector<Segment_parameter>& ends,
-                      const std::vector<Segment_parameter>& known, bool pin) {
-    if (ends.empty()) return false;
-    auto is_known = [&](const Segment_parameter& t) {
-      return std::any_of(known.begin(), known.end(), [&](const Segment_parameter& e) { return compare(e, t) == CGAL::ZERO; });
-    };
-    Point3 forward = position(b) - position(a);
-    const double length = std::sqrt(dot(forward, forward));
-    forward = length > 0 ? scaled(forward, 1 / length) : Point3{0, 0, 0};
-    bool narrow = false;
-    for (std::size_t k = 0; k < ends.size(); ++k) {
-      if (k > 0 && compare(ends[k], ends[k - 1]) == CGAL::ZERO) continue; // an isolated free point
-      const std::size_t other = k % 2 == 0 ? k + 1 : k - 1; // the other end of its free part
-      const double width =
-        other < ends.size() ? std::abs(CGAL::to_double(ends[k].value()) - CGAL::to_double(ends[other].value())) * length
-                            : d;
-      const bool strip = width > 0 && width < d / 2;
-      narrow = narrow || strip;
-      // (a free part found again: nothing new; a known end: kept only as a narrow strip's corner)
-      const bool known_end = is_known(ends[k]);
-      if (known_end && (other >= ends.size() || is_known(ends[other]) || !(strip && pin))) continue;
-      add(a, Trim{lattice.p(b), lattice.q(b), ends[k].value(), {}, {}, {}, {}, {}},
-          !strip ? Point3{0, 0, 0} : k % 2 == 0 ? scaled(forward, -1.) : forward, strip && pin ? 0. : radius);
-    }
-    return narrow;
-  };
-  std::vector<Segment_parameter> ends;
-  std::vector<std::pair<Segment, std::vector<Segment_parameter>>> border; // facet border segments with free parts
-  for (std::size_t n = 0; n < to_search.size(); ++n) {
-    const Segment ab = to_search[n];
-    Segment_info& info = segments[ab];
-    const auto [a, b] = ab;
-    const Corner_info &ca = corner(a), &cb = corner(b);
-    if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
-    if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, false)) continue;
-    ends.clear();
-    search.free_ends(Translation_segment(point(a), point(b)), directions, fp.number_of_directions, ends,
-                     {ca.witness, cb.witness});
-    info.has_ends = !ends.empty();
-    info.narrow = add_ends(a, b, ends, {}, false);
-    if (info.has_ends && lattice.on_border(a, b)) border.emplace_back(ab, ends);
-    // Followed (Strips): a strip narrower than d/2 into the cells on both sides of the
-    // segment with an untested corner, which the covering does not need.
-    if (info.narrow && strips == Strips::followed) follow(ab);
-  }
-  // On the facet's border, a segment may be free where the facet next to it is hidden (the
-  // border lies on another face of the boundary): seen from inside the facet, its free parts
-  // end where a trim curve meets the border. Where a strip narrower than d/2 enters the
-  // segment's cell through one other edge (and leaves through the border, not through the
-  // third edge), the strip's ends on the border are corners of the boundary that no other
-  // point stands for (a narrow tunnel's mouth): searched again from the facet's side (only
-  // where a free part is longer than a point: the side's free parts are within them), kept.
-  for (const auto& [ab, known] : border) {
-    const auto [a, b] = ab;
-    const std::uint32_t o = segments[ab].opposite;
-    if (segments[segment({a, b, o}, 1)].narrow == segments[segment({a, b, o}, 2)].narrow) continue;
-    bool longer = false;
-    for (std::size_t k = 0; k + 1 < known.size(); k += 2) longer = longer || compare(known[k], known[k + 1]) != CGAL::ZERO;
-    if (!longer) continue;
-    const Translation_segment s(point(a), point(b));
-    Vec3<Exact_nt> inward;
-    for (int c = 0; c < 3; ++c) inward[c] = point(o).X[c] * s.a.W - s.a.X[c] * point(o).W;
-    ends.clear();
-    search.free_ends(s, directions, fp.number_of_directions, ends, {corner(a).witness, corner(b).witness}, &inward);
-    add_ends(a, b, ends, known, true);
-  }
-  if (!islands) return;
-  bool started = false;
-  for (std::size_t i : cells) {
-    const auto& cell = lattice.cells()[i];
-    bool has_ends = false;
-    for (int k = 0; k < 3; ++k) has_ends = has_ends || segments[segment(cell, k)].has_ends;
-    if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
-    if (!started) {
-      const auto facet = lattice.facet_corners();
-      std::array<Exact_point, 3> F;
-      for (int k = 0; k < 3; ++k) F[k] = exact_sum(P, facet[k].first, Q, facet[k].second);
-      islands->start_facet(F, directions, fp.number_of_directions);
-      started = true;
-    }
-    const std::optional<Cell_weights> w =
-      islands->island_point({point(cell[0]), point(cell[1]), point(cell[2])});
-    if (w)
-      add(cell[0], Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}},
-          Point3{0, 0, 0}, radius);
-  }
+  Facet_trim_search<CornerInfo, Certified> trim(lattice, P, Q, pairs, fp, d, strips, corner, certified_box, search, out);
+  if (!trim.select_cells()) return;
+  trim.search_segments();
+  trim.search_border_corners();
+  if (islands) trim.search_islands(*islands);
 }
 
 } // namespace internal
