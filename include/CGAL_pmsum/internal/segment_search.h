@@ -22,11 +22,14 @@
 // Minkowski difference), so a pair crosses on one interval of the segment. Intervals alone
 // often know most of it (Cd_filter::crossing_range(): parameters where the pair certainly
 // crosses, and where it certainly does not); the exact tests are left for the elements near
-// the ends of that interval. Quick exits:
+// the ends of that interval. Quick exits, cheapest first:
 //  - the witnesses of the ends certainly cross on all of the segment (intervals only);
-//  - hops: a chain of pairs' runs, each found by a CD query where the previous one ends;
 //  - one pair crosses at a + delta and at b + delta (the same infinitesimal perturbation
-//    delta): then x(l) + delta is in U for every l (convexity), and nothing is free.
+//    delta): then x(l) + delta is in U for every l (convexity), and nothing is free; first
+//    tried with the few pairs known to cross near the segment (its ends' witnesses, the pair
+//    of the last quick exit, the filter's last crossing), a few exact tests;
+//  - hops: a chain of pairs' runs, each found by a CD query where the previous one ends;
+//  - the convexity exit again, with every pair whose box overlaps the segment's.
 // Otherwise only the pairs that can change the union of the runs are searched: a pair that
 // can only cross where others certainly cross is dropped (keep_pairs_that_matter()).
 
@@ -124,7 +127,9 @@ public:
     m_a = enclosure(s.a);
     m_b = enclosure(s.b);
     // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
-    if (certainly_covered(witnesses) || covered_by_hops(s, witnesses[0]) || one_pair_covers(s, witnesses)) return;
+    if (certainly_covered(witnesses) || known_pair_covers(s, witnesses) || covered_by_hops(s, witnesses[0]) ||
+        one_pair_covers(s))
+      return;
 
     // Each pair's crossing set: runs of its own elements (between the roots of its own
     // predicates). The elements of the segment: R_0 = 0 < R_1 < ... < R_k = 1, the ends of
@@ -181,17 +186,33 @@ public:
   }
 
 private:
-  /// Does one item pair cross at both ends of s (perturbed along the directions, then the
-  /// axes)? Then it crosses on all of s (see the file comment), where nothing is free.
+  /// Does the item pair cross on all of s? Yes if intervals (`range`, crossing_range())
+  /// show it, or if it crosses at both ends of s (perturbed along the directions, then the
+  /// axes; see the file comment), tested exactly where intervals do not show it missing one.
+  bool pair_covers(const Translation_segment& s, const std::pair<Index, Index>& pair, const Crossing_range& range)
+  {
+    if (range.covers_segment()) return true;
+    if (range.low > 0 || range.high < 1) return false;
+    return m_filter.pair_crosses_at(pair.first, pair.second, {&s.a, &s.b}, m_directions, m_count, {m_side, nullptr});
+  }
+
+  /// Does a pair known to cross near s (the ends' witnesses, the last pair that covered a
+  /// segment, the filter's last crossing) cover s? A few pairs: cheaper than a CD query.
+  bool known_pair_covers(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses)
+  {
+    for (const auto& pair : {witnesses[0], witnesses[1], m_last_quick, m_filter.last_crossing()})
+      if (pair && pair_covers(s, *pair, m_filter.crossing_range(pair->first, pair->second, m_a, m_b))) {
+        m_last_quick = pair;
+        return true;
+      }
+    return false;
+  }
+
+  /// Does one of the item pairs whose boxes overlap on s cover it?
   /// Fills m_pairs with the item pairs that may cross on s, and m_ranges with what is known
   /// of where (Cd_filter::crossing_range()).
-  bool one_pair_covers(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses)
+  bool one_pair_covers(const Translation_segment& s)
   {
-    auto crosses_at_both_ends = [&](const std::pair<Index, Index>& pair) {
-      return m_filter.pair_crosses_at(pair.first, pair.second, {&s.a, &s.b}, m_directions, m_count, {m_side, nullptr});
-    };
-    for (const auto& pair : {witnesses[0], witnesses[1], m_last_quick, m_filter.last_crossing()})
-      if (pair && crosses_at_both_ends(*pair)) { m_last_quick = pair; return true; }
     m_pairs.clear();
     m_ranges.clear();
     bool found = false;
@@ -200,8 +221,7 @@ private:
       if (range.misses_segment()) return false;
       m_pairs.emplace_back(u, v);
       m_ranges.push_back(range);
-      if (!range.covers_segment() && (range.low > 0 || range.high < 1 || !crosses_at_both_ends(m_pairs.back())))
-        return false;
+      if (!pair_covers(s, m_pairs.back(), range)) return false;
       m_last_quick = m_pairs.back();
       return found = true;
     });
