@@ -228,7 +228,8 @@ public:
 
   const Cd_statistics& statistics() const { return m_stats; }
 
-  /// Did the last query, answered "not free", decide without looking at the perturbation?
+  /// Did the last query of is_free(), answered "not free", decide without looking at the
+  /// perturbation?
   /// True iff some pair of items crosses with every predicate of its test non-zero at x
   /// itself, or, if no pair crosses, the containment test that decided was so: then that
   /// test, hence the answer, is the same for any direction. This depends on x only, not on
@@ -728,13 +729,16 @@ private:
   /// changes which crossing is found and how many pairs are tested). The last crossing
   /// found by this filter is tried first: consecutive candidates are close, and many inner
   /// ones cross there too (forget_last_crossing() starts afresh).
-  /// A crossing whose test looked at the perturbation does not stop the search, unless x is
-  /// already known to have no other kind: see decided_without_perturbation().
+  /// A crossing whose test looked at the perturbation does not stop the search of a
+  /// candidate's query (is_free()), unless x is already known to have no other kind: see
+  /// decided_without_perturbation(). Other queries (set_point(), is_free_at()) stop at the
+  /// first crossing: nothing asks them how they were decided.
   bool surfaces_cross()
   {
-    // x has no crossing decided at x itself (found by the previous query, on the same samples).
-    const bool only_perturbed = m_sp && m_only_perturbed && same(m_only_perturbed->first, *m_sp) &&
-                                same(m_only_perturbed->second, *m_sq);
+    // Stop at the first crossing: x is not a candidate's, or it has no crossing decided at x
+    // itself (found by the previous query, on the same samples).
+    const bool only_perturbed = !m_sp || (m_only_perturbed && same(m_only_perturbed->first, *m_sp) &&
+                                          same(m_only_perturbed->second, *m_sq));
     bool found = false; // a crossing that looked at the perturbation
     auto stop = [&](Index u, Index v) {
       if (!items_cross(u, v)) return false;
