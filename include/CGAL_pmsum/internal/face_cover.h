@@ -125,7 +125,15 @@ public:
 
 private:
   using Key = std::array<std::int64_t, 4>;
-  using Polygon = std::vector<EK::Point_2>; // convex, counterclockwise
+  /// A corner of a projected facet: the point, and its coordinates (exact sums p + q) each
+  /// as the pair (rounded sum, rounding error), which is equal for equal points only.
+  struct Corner
+  {
+    EK::Point_2 point;
+    std::array<double, 4> sum;
+    bool operator==(const Corner& other) const { return sum == other.sum; }
+  };
+  using Polygon = std::vector<Corner>; // convex, counterclockwise
   using Border = std::vector<std::pair<EK::Segment_2, CGAL::Bbox_2>>; // pieces with their boxes
   struct Facet
   {
@@ -161,6 +169,13 @@ private:
     return out;
   }
 
+  /// a + b exactly: the rounded sum and its rounding error (Knuth's TwoSum).
+  static std::array<double, 2> two_sum(double a, double b)
+  {
+    const double s = a + b, bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+  }
+
   /// Appends facet f's projection, exactly (each coordinate the exact sum p + q),
   /// counterclockwise; none if it projects to a segment.
   void add_polygon(std::size_t f, std::vector<Polygon>& polygons) const
@@ -168,10 +183,12 @@ private:
     Polygon polygon;
     for (const std::pair<Index, Index>& corner : corner_indices(m_facets[f].pair)) {
       const auto &p = m_p.points[corner.first], &q = m_q.points[corner.second];
-      auto coordinate = [&](int a) { return EK::FT(p[a]) + EK::FT(q[a]); };
-      polygon.emplace_back(coordinate((m_drop + 1) % 3), coordinate((m_drop + 2) % 3));
+      const int x = (m_drop + 1) % 3, y = (m_drop + 2) % 3;
+      const std::array<double, 2> sx = two_sum(p[x], q[x]), sy = two_sum(p[y], q[y]);
+      polygon.push_back(Corner{EK::Point_2(EK::FT(p[x]) + EK::FT(q[x]), EK::FT(p[y]) + EK::FT(q[y])),
+                               {sx[0], sx[1], sy[0], sy[1]}});
     }
-    const CGAL::Orientation o = CGAL::orientation(polygon[0], polygon[1], polygon[2]);
+    const CGAL::Orientation o = CGAL::orientation(polygon[0].point, polygon[1].point, polygon[2].point);
     if (o == CGAL::COLLINEAR) return;
     if (o == CGAL::CLOCKWISE) std::reverse(polygon.begin(), polygon.end());
     polygons.push_back(std::move(polygon));
@@ -188,8 +205,7 @@ private:
     for (std::size_t g = 0; g < polygons.size(); ++g) {
       CGAL::Bbox_2 box;
       for (std::size_t k = 0; k < polygons[g].size(); ++k) {
-        const EK::Point_2 &a = polygons[g][k], &b = polygons[g][(k + 1) % polygons[g].size()];
-        const CGAL::Bbox_2 e = a.bbox() + b.bbox();
+        const CGAL::Bbox_2 e = polygons[g][k].point.bbox() + polygons[g][(k + 1) % polygons[g].size()].point.bbox();
         edges.emplace_back(e, edge_ids.size());
         edge_ids.emplace_back(g, k);
         box += e;
@@ -203,52 +219,63 @@ private:
                              });
     for (std::size_t e = 0; e < edge_ids.size(); ++e) {
       const Polygon& own = polygons[edge_ids[e].first];
-      const EK::Point_2 &a = own[edge_ids[e].second], &b = own[(edge_ids[e].second + 1) % own.size()];
+      const Corner &a = own[edge_ids[e].second], &b = own[(edge_ids[e].second + 1) % own.size()];
       std::vector<std::pair<EK::FT, EK::FT>> covered; // parameters along a -> b
-      for (std::size_t g : near[e]) right_cover(a, b, polygons[g], covered);
+      bool whole = false;
+      for (std::size_t i = 0; i < near[e].size() && !whole; ++i) whole = right_cover(a, b, polygons[near[e][i]], covered);
+      if (whole) continue; // (most edges inside a face: a neighbour shares them)
       std::sort(covered.begin(), covered.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
       EK::FT reached = 0; // [0, reached] covered, or a piece of border ends there
       for (const auto& [from, to] : covered) {
         if (!(reached < 1)) break;
-        if (reached < from) add_piece(a, b, reached, (CGAL::min)(from, EK::FT(1)), out);
+        if (reached < from) add_piece(a.point, b.point, reached, (CGAL::min)(from, EK::FT(1)), out);
         if (reached < to) reached = to;
       }
-      if (reached < 1) add_piece(a, b, reached, 1, out);
+      if (reached < 1) add_piece(a.point, b.point, reached, 1, out);
     }
     return out;
   }
 
-  /// The parameters along a -> b of the stretch of that line whose right side polygon g
-  /// covers (through g's interior, or along an edge of g with g on the right), if any.
-  static void right_cover(const EK::Point_2& a, const EK::Point_2& b, const Polygon& g,
+  /// Appends the parameters along a -> b of the stretch of that line whose right side
+  /// polygon g covers (through g's interior, or along an edge of g with g on the right), if
+  /// any; true if that stretch holds all of a -> b (then perhaps nothing is appended).
+  static bool right_cover(const Corner& a, const Corner& b, const Polygon& g,
                           std::vector<std::pair<EK::FT, EK::FT>>& covered)
   {
     // The sides first, by the filtered predicate; constructions only for a polygon that the
-    // line meets.
+    // line meets, and none at a corner that is a or b.
     std::vector<CGAL::Sign> side;
-    bool right = false, left = false;
+    bool right = false, left = false, has_a = false, has_b = false;
     int on = 0;
-    for (const EK::Point_2& x : g) {
-      side.push_back(CGAL::orientation(a, b, x));
+    for (const Corner& x : g) {
+      side.push_back(CGAL::orientation(a.point, b.point, x.point));
       right |= side.back() == CGAL::NEGATIVE;
       left |= side.back() == CGAL::POSITIVE;
       on += side.back() == CGAL::ZERO;
+      has_a |= x == a;
+      has_b |= x == b;
     }
-    if (!right || (!left && on < 2)) return;
-    const EK::Vector_2 ab = b - a;
-    auto area = [&](const EK::Point_2& x) { return ab.x() * (x.y() - a.y()) - ab.y() * (x.x() - a.x()); };
-    auto along = [&](const EK::Point_2& x) { return ((x - a) * ab) / ab.squared_length(); };
+    if (!right || (!left && on < 2)) return false;
+    if (has_a && has_b) return true; // (g convex, with a corner right of a -> b)
+    const EK::Vector_2 ab = b.point - a.point;
+    auto area = [&](const EK::Point_2& x) { return ab.x() * (x.y() - a.point.y()) - ab.y() * (x.x() - a.point.x()); };
+    auto along = [&](const Corner& x) {
+      return x == a ? EK::FT(0) : x == b ? EK::FT(1) : ((x.point - a.point) * ab) / ab.squared_length();
+    };
     std::vector<EK::FT> at; // where the line meets g's border
     for (std::size_t k = 0; k < g.size(); ++k) {
       const std::size_t l = (k + 1) % g.size();
       if (side[k] == CGAL::ZERO) at.push_back(along(g[k]));
       else if (side[k] * side[l] == CGAL::NEGATIVE) {
-        const EK::FT sk = area(g[k]), sl = area(g[l]);
-        at.push_back(along(g[k] + (sk / (sk - sl)) * (g[l] - g[k])));
+        const EK::FT sk = area(g[k].point), sl = area(g[l].point);
+        const EK::Point_2 x = g[k].point + (sk / (sk - sl)) * (g[l].point - g[k].point);
+        at.push_back(((x - a.point) * ab) / ab.squared_length());
       }
     }
     const auto [lo, hi] = std::minmax_element(at.begin(), at.end());
-    if (*lo < *hi) covered.emplace_back(*lo, *hi);
+    if (!(*lo < *hi)) return false;
+    covered.emplace_back(*lo, *hi);
+    return !(*lo > 0) && !(*hi < 1);
   }
 
   static void add_piece(const EK::Point_2& a, const EK::Point_2& b, const EK::FT& from, const EK::FT& to, Border& out)
