@@ -274,6 +274,7 @@ private:
     for (std::uint32_t i : pairs) {
       const Pair& pair = m_pairs[i].pair;
       Plane_pair& plane = *m_pairs[i].plane;
+      m_pair_lines.clear();
       std::uint32_t bit = 1;
       m_filter.for_each_predicate(pair.first, pair.second,
                                   [&](const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d) {
@@ -332,6 +333,11 @@ private:
       }
     }
     if (ends.size() != 2) return true;
+    // Several predicates of a pair often share a line (so do other pairs': m_lines): its
+    // piece is the same, searched already.
+    for (const auto& line : m_pair_lines)
+      if (same(line[0], ends[0]) && same(line[1], ends[1])) return true;
+    m_pair_lines.push_back({ends[0], ends[1]});
     // Only where the pair's crossing set, or its closure, can be: [low, high] (intervals).
     // Other pairs can share the line with other ranges: each clipped piece is searched once.
     const Exact_point p0 = point(corners, ends[0]), p1 = point(corners, ends[1]);
@@ -376,10 +382,12 @@ private:
     return false;
   }
 
+  static bool same(const Border_point& x, const Border_point& y)
+  { return x.edge == y.edge && compare(x.l, y.l) == CGAL::ZERO; }
+
   /// Was this piece (the same line, clipped to the same parameters) searched in this cell?
   bool is_searched(const Line_piece& piece) const
   {
-    auto same = [](const Border_point& x, const Border_point& y) { return x.edge == y.edge && compare(x.l, y.l) == CGAL::ZERO; };
     for (const Line_piece& p : m_lines)
       if (same(p.a, piece.a) && same(p.b, piece.b) && compare(p.from, piece.from) == CGAL::ZERO &&
           compare(p.to, piece.to) == CGAL::ZERO)
@@ -437,6 +445,7 @@ private:
   };
   std::vector<Leaf> m_leaves;              // of the current cell, where an island's edge can be
   std::vector<Line_piece> m_lines;         // searched in the current cell
+  std::vector<std::array<Border_point, 2>> m_pair_lines; // the current pair's lines met in the cell
   std::vector<Segment_parameter> m_ends;
 };
 
