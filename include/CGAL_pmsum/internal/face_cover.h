@@ -169,9 +169,11 @@ private:
     return out;
   }
 
-  /// a + b exactly: the rounded sum and its rounding error (Knuth's TwoSum).
+  /// a + b exactly: the rounded sum and its rounding error (Knuth's TwoSum, which needs
+  /// rounding to nearest).
   static std::array<double, 2> two_sum(double a, double b)
   {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     const double s = a + b, bb = s - a;
     return {s, (a - (s - bb)) + (b - bb)};
   }
