@@ -127,7 +127,10 @@ public:
     m_a = enclosure(s.a);
     m_b = enclosure(s.b);
     // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
-    if (certainly_covered(witnesses) || known_pair_covers(s, witnesses) || covered_by_hops(s, witnesses[0]) ||
+    std::array<Crossing_range, 2> known; // the witnesses' (nothing known without one)
+    for (int k = 0; k < 2; ++k)
+      if (witnesses[k]) known[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, m_a, m_b);
+    if (certainly_covered(known) || known_pair_covers(s, witnesses, known) || covered_by_hops(s, witnesses[0], known[0]) ||
         one_pair_covers(s))
       return;
 
@@ -196,15 +199,22 @@ private:
     return m_filter.pair_crosses_at(pair.first, pair.second, {&s.a, &s.b}, m_directions, m_count, {m_side, nullptr});
   }
 
-  /// Does a pair known to cross near s (the ends' witnesses, the last pair that covered a
-  /// segment, the filter's last crossing) cover s? A few pairs: cheaper than a CD query.
-  bool known_pair_covers(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses)
+  /// Does a pair known to cross near s (the ends' witnesses, whose crossing ranges are
+  /// `ranges`, the last pair that covered a segment, the filter's last crossing) cover s? A
+  /// few pairs, each tried once: cheaper than a CD query.
+  bool known_pair_covers(const Translation_segment& s, const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses,
+                         const std::array<Crossing_range, 2>& ranges)
   {
-    for (const auto& pair : {witnesses[0], witnesses[1], m_last_quick, m_filter.last_crossing()})
-      if (pair && pair_covers(s, *pair, m_filter.crossing_range(pair->first, pair->second, m_a, m_b))) {
+    const std::array<std::optional<std::pair<Index, Index>>, 4> pairs = {witnesses[0], witnesses[1], m_last_quick,
+                                                                         m_filter.last_crossing()};
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const auto& pair = pairs[k];
+      if (!pair || std::find(pairs.begin(), pairs.begin() + k, pair) != pairs.begin() + k) continue;
+      if (pair_covers(s, *pair, k < 2 ? ranges[k] : m_filter.crossing_range(pair->first, pair->second, m_a, m_b))) {
         m_last_quick = pair;
         return true;
       }
+    }
     return false;
   }
 
@@ -272,13 +282,10 @@ private:
     m_ranges.resize(kept);
   }
 
-  /// Do intervals alone show that the witnesses' crossings cover s (Cd_filter::
-  /// crossing_range(): the first from 0, the second up to 1, meeting)?
-  bool certainly_covered(const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses) const
+  /// Do intervals alone show that the witnesses' crossings (their crossing ranges `r`,
+  /// Cd_filter::crossing_range()) cover s: the first from 0, the second up to 1, meeting?
+  static bool certainly_covered(const std::array<Crossing_range, 2>& r)
   {
-    std::array<Crossing_range, 2> r; // nothing known without a witness
-    for (int k = 0; k < 2; ++k)
-      if (witnesses[k]) r[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, m_a, m_b);
     return r[0].covers_segment() || r[1].covers_segment() ||
            (r[0].in_from < 0 && r[1].in_to > 1 && r[0].in_to > r[1].in_from);
   }
@@ -286,17 +293,19 @@ private:
   /// Is the segment covered by the crossing runs of a chain of item pairs, each found by a
   /// CD query on the element where the previous run ends (at most 16)? Cheap when many
   /// small items hide the segment one after the other (fine meshes), where no single pair
-  /// crosses at both ends. The first run is `start`'s if intervals show it crosses at 0.
-  bool covered_by_hops(const Translation_segment& s, const std::optional<std::pair<Index, Index>>& start)
+  /// crosses at both ends. The first run is `start`'s if intervals (`start_range`, its
+  /// crossing range) show it crosses at 0.
+  bool covered_by_hops(const Translation_segment& s, const std::optional<std::pair<Index, Index>>& start,
+                       const Crossing_range& start_range)
   {
     Segment_parameter at = Segment_parameter::zero();
     bool on_gap = false; // the element: the point `at`, or the open interval just after it
     for (int hop = 0; hop < 16; ++hop) {
       std::optional<std::pair<Index, Index>> hit;
       Crossing_range range;
-      if (hop == 0 && start) {
-        range = m_filter.crossing_range(start->first, start->second, m_a, m_b);
-        if (range.in_from < 0 && range.in_to > 0) hit = start;
+      if (hop == 0 && start && start_range.in_from < 0 && start_range.in_to > 0) {
+        range = start_range;
+        hit = start;
       }
       if (!hit) {
         set_query(s.at(at), on_gap);
