@@ -261,17 +261,14 @@ private:
     if (has_a && has_b) return true; // (g convex, with a corner right of a -> b)
     const EK::Vector_2 ab = b.point - a.point;
     auto area = [&](const EK::Point_2& x) { return ab.x() * (x.y() - a.point.y()) - ab.y() * (x.x() - a.point.x()); };
-    auto along = [&](const Corner& x) {
-      return x == a ? EK::FT(0) : x == b ? EK::FT(1) : ((x.point - a.point) * ab) / ab.squared_length();
-    };
+    auto along = [&](const EK::Point_2& x) { return ((x - a.point) * ab) / ab.squared_length(); };
     std::vector<EK::FT> at; // where the line meets g's border
     for (std::size_t k = 0; k < g.size(); ++k) {
       const std::size_t l = (k + 1) % g.size();
-      if (side[k] == CGAL::ZERO) at.push_back(along(g[k]));
+      if (side[k] == CGAL::ZERO) at.push_back(g[k] == a ? EK::FT(0) : g[k] == b ? EK::FT(1) : along(g[k].point));
       else if (side[k] * side[l] == CGAL::NEGATIVE) {
         const EK::FT sk = area(g[k].point), sl = area(g[l].point);
-        const EK::Point_2 x = g[k].point + (sk / (sk - sl)) * (g[l].point - g[k].point);
-        at.push_back(((x - a.point) * ab) / ab.squared_length());
+        at.push_back(along(g[k].point + (sk / (sk - sl)) * (g[l].point - g[k].point)));
       }
     }
     const auto [lo, hi] = std::minmax_element(at.begin(), at.end());
