@@ -35,6 +35,7 @@
 
 #include <initializer_list>
 #include <tuple>
+#include <unordered_map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -70,6 +71,9 @@ inline Exact_point exact_sum(const Mesh_data& P, const Sample& p, const Mesh_dat
   return {part(P, p, q.denominator) + part(Q, q, p.denominator),
           Exact_nt(long(std::int64_t(p.denominator) * q.denominator))};
 }
+
+/// Is w the zero vector?
+inline bool is_null(const Vec3<Exact_nt>& w) { return CGAL::is_zero(w[0]) && CGAL::is_zero(w[1]) && CGAL::is_zero(w[2]); }
 
 /// Interval enclosure of X / W.
 inline Vec3<Interval> enclosure(const Exact_point& x)
@@ -253,6 +257,7 @@ public:
     m_plain = t;
     m_dirs = nullptr; m_dir_count = 0; m_dir_first = 0;
     m_prefix = {};
+    m_query_on_plane = false;
     m_exact_x.reset();
     m_x = to_nt<Interval>(t);
     return configuration_is_free();
@@ -272,10 +277,20 @@ public:
     m_exact_x.emplace(x.X, x.W);
     m_x = enclosure(x);
     m_prefix = prefix;
+    m_query_on_plane = false;
     CGAL::Protect_FPU_rounding<true> guard;
     for (std::size_t k = 0; k < prefix.size(); ++k)
       if (prefix[k])
         for (int c = 0; c < 3; ++c) m_prefix_interval[k][c] = CGAL::to_interval((*prefix[k])[c]);
+  }
+
+  /// set_point() for a point x of the plane set by set_plane(), perturbed first along the
+  /// prefix's directions (parallel to the plane), then along the plane's directions: the
+  /// queries that follow do not test the pairs that cross nowhere on the plane (on_plane()).
+  void set_point_on_plane(const Exact_point& x, const Prefix& prefix)
+  {
+    set_point(x, m_plane.directions, m_plane.count, prefix);
+    m_query_on_plane = true;
   }
 
   /// Is the query set by set_point() free?
@@ -370,6 +385,7 @@ public:
   {
     Crossing_range r;
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    if (parallel_triangles(u, v)) { r.low = HUGE_VAL; return r; } // crosses nowhere
     CGAL::Protect_FPU_rounding<true> guard;
     bool inside_known = true;
     r.in_from = -HUGE_VAL; r.in_to = HUGE_VAL;
@@ -405,6 +421,7 @@ public:
     using Where = Crossing_slabs::Where;
     std::pair<Crossing_slabs, Where> r{{}, Where::border};
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    if (parallel_triangles(u, v)) return {{}, Where::outside};
     r.first.known = true;
     bool inside = true;
     for_each_slab(u, v, [&](int k, const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
@@ -417,6 +434,23 @@ public:
     });
     if (r.second != Where::outside && inside) r.second = Where::inside;
     return r;
+  }
+
+  /// Are items u (moving) and v (static) two triangles in parallel planes (exactly)? Their
+  /// crossing set B - A is then flat (empty interior): they cross at no translation, once
+  /// perturbed (every query is). Coplanar faces of CAD models touch so along whole facets of
+  /// translations, where their predicates are zero and only the perturbation decides.
+  bool parallel_triangles(Index u, Index v) const
+  {
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return false;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const Vec3<Interval> c = cross(m_moving.normals[u], m_static.normals[v]);
+      for (int i = 0; i < 3; ++i)
+        if (c[i].inf() > 0 || c[i].sup() < 0) return false;
+    }
+    const Vec3<Exact_nt> a = axis<Exact_nt>(u, v, 0), b = axis<Exact_nt>(u, v, 1);
+    return is_null(cross(a, b)) && !is_null(a) && !is_null(b);
   }
 
   /// Axis k of the eleven normal to the facets of B - A (A: moving triangle u, B: static
@@ -474,8 +508,9 @@ public:
     p.exact_point = T[0];
     // The side of H to which the perturbation moves its points: the first v of the chain
     // (directions, then axes) with n.v != 0 (see perturbation_sign()).
-    m_dirs = directions; m_dir_count = count; m_dir_first = 0;
+    m_dirs = p.directions = directions; m_dir_count = p.count = count; m_dir_first = 0;
     m_prefix = {};
+    m_query_on_plane = false;
     p.side = perturbation_sign([&](auto nt) {
       using NT = decltype(nt);
       if constexpr (std::is_same<NT, Interval>::value)
@@ -489,6 +524,7 @@ public:
     p.normal = cross(e[1] - e[0], e[2] - e[0]);
     std::tie(p.low, p.high) = Crossing_slabs::extent(p.normal, e);
     ++p.stamp;
+    p.crossings.clear();
     p.moving.resize(m_moving.mesh->number_of_triangles());
     p.fixed.resize(m_static.mesh->number_of_triangles());
   }
@@ -500,35 +536,18 @@ public:
   /// bounding plane: then the perturbation moves every point of H into it (ignored) or out
   /// of it (never), the same for all. So the slab that has H as a supporting plane of the
   /// crossing set (coplanar faces), which intervals can never decide on H, is decided once.
-  /// Exact.
+  /// Exact; computed once per pair and plane.
   struct Plane_crossing
   {
     bool never = false;
     std::uint16_t ignored = 0;
   };
-  Plane_crossing on_plane(Index u, Index v) const
+  const Plane_crossing& on_plane(Index u, Index v)
   {
-    Plane_crossing r;
-    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
-    const Plane& p = m_plane;
-    std::optional<bool> holds; // does the slab normal to H hold every point of H, perturbed?
-    for (int k = 0; k < 11 && !r.never; ++k) {
-      {
-        CGAL::Protect_FPU_rounding<true> guard;
-        const Vec3<Interval> w = cross(axis<Interval>(u, v, k), p.normal);
-        if (!(w[0].do_overlap(0) && w[1].do_overlap(0) && w[2].do_overlap(0))) continue; // not normal to H
-      }
-      const Vec3<Exact_nt> x = axis<Exact_nt>(u, v, k);
-      auto zero = [](const Vec3<Exact_nt>& y) { return CGAL::is_zero(y[0]) && CGAL::is_zero(y[1]) && CGAL::is_zero(y[2]); };
-      if (zero(x)) { r.ignored |= std::uint16_t(1) << k; continue; } // no slab (its enclosure may not show it)
-      if (!zero(cross(x, p.exact_normal))) continue;                   // not normal to H
-      // Every axis normal to H gives the same slab: the extent of B - A along H's normal n,
-      // compared with H's position n.X / W once.
-      if (!holds) holds = slab_normal_to_plane_holds(u, v);
-      if (*holds) r.ignored |= std::uint16_t(1) << k;
-      else r.never = true;
-    }
-    return r;
+    const std::uint64_t key = std::uint64_t(u) << 32 | v;
+    auto it = m_plane.crossings.find(key);
+    if (it == m_plane.crossings.end()) it = m_plane.crossings.emplace(key, plane_crossing(u, v)).first;
+    return it->second;
   }
 
   /// Does the slab of the pair (u, v) normal to the plane H set by set_plane() hold every
@@ -572,6 +591,31 @@ public:
   }
 
 private:
+  /// on_plane(u, v), computed.
+  Plane_crossing plane_crossing(Index u, Index v) const
+  {
+    Plane_crossing r;
+    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    const Plane& p = m_plane;
+    std::optional<bool> holds; // does the slab normal to H hold every point of H, perturbed?
+    for (int k = 0; k < 11 && !r.never; ++k) {
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const Vec3<Interval> w = cross(axis<Interval>(u, v, k), p.normal);
+        if (!(w[0].do_overlap(0) && w[1].do_overlap(0) && w[2].do_overlap(0))) continue; // not normal to H
+      }
+      const Vec3<Exact_nt> x = axis<Exact_nt>(u, v, k);
+      if (is_null(x)) { r.ignored |= std::uint16_t(1) << k; continue; } // no slab (its enclosure may not show it)
+      if (!is_null(cross(x, p.exact_normal))) continue;                   // not normal to H
+      // Every axis normal to H gives the same slab: the extent of B - A along H's normal n,
+      // compared with H's position n.X / W once.
+      if (!holds) holds = slab_normal_to_plane_holds(u, v);
+      if (*holds) r.ignored |= std::uint16_t(1) << k;
+      else r.never = true;
+    }
+    return r;
+  }
+
   /// Enclosures of the minimum and the maximum of w.x over the corners x of triangle t of m.
   /// Needs rounding towards +infinity.
   static std::pair<Interval, Interval> extremes(const Tree_mesh& m, Index t, const Vec3<Interval>& w)
@@ -610,6 +654,7 @@ private:
     m_sp = &p; m_sq = &q;
     m_dirs = directions; m_dir_count = count; m_dir_first = first;
     m_prefix = {};
+    m_query_on_plane = false;
     m_exact_x.reset();
     CGAL::Protect_FPU_rounding<true> guard;
     m_x = sample_interval(*m_p, p) + sample_interval(*m_q, q);
@@ -842,7 +887,8 @@ private:
       A[i] = {&m_moving.base[tm[i]], 1};
       B[i] = {&m_static.base[ts[i]], 0};
     }
-    if (separated_by_a_plane(t, s, m_x)) return false;
+    if (separated_by_a_plane(t, s, m_x) || parallel_triangles(t, s) || (m_query_on_plane && on_plane(t, s).never))
+      return false;
     return triangles_cross(A, B);
   }
 
@@ -911,6 +957,7 @@ private:
   const Direction* m_dirs = nullptr;
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
   Prefix m_prefix{}; // set_point(): the first perturbation directions
+  bool m_query_on_plane = false; // set_point_on_plane()
   struct Plane // set_plane()
   {
     struct Extent
@@ -922,9 +969,12 @@ private:
     double low = 0, high = 0; // of the plane along its normal
     Vec3<Exact_nt> exact_normal;
     Exact_point exact_point; // a point of the plane
+    const Direction* directions = nullptr; // its points' perturbation
+    std::uint32_t count = 0;
     CGAL::Sign side = CGAL::ZERO; // of the perturbation, along exact_normal
     std::uint64_t stamp = 0;
     std::vector<Extent> moving, fixed;
+    std::unordered_map<std::uint64_t, Plane_crossing> crossings; // on_plane(), of the pairs met
   } m_plane;
   std::array<Vec3<Interval>, 2> m_prefix_interval;
   Vec3<Interval> m_x;

@@ -84,13 +84,13 @@ public:
   /// Number of cells whose lines were searched.
   std::size_t searched_cells() const { return m_cells; }
 
-  /// Starts the cells of a facet, the triangle F (exact corners, not collinear) of
-  /// translations, whose points are perturbed along the directions.
-  void start_facet(const std::array<Exact_point, 3>& F, const Direction* directions, std::uint32_t count)
+  /// Starts the cells of a facet of translations, whose points are perturbed along the
+  /// directions. @pre The segment search's plane is the facet's, with the same directions
+  /// (Segment_search::start_plane()).
+  void start_facet(const Direction* directions, std::uint32_t count)
   {
     m_directions = directions;
     m_count = count;
-    m_filter.set_plane(F, directions, count);
     m_on_plane.clear();
   }
 

@@ -32,6 +32,8 @@
 //  - the convexity exit again, with every pair whose box overlaps the segment's.
 // Otherwise only the pairs that can change the union of the runs are searched: a pair that
 // can only cross where others certainly cross is dropped (keep_pairs_that_matter()).
+// Segments on a plane of translations (a convolution facet's: start_plane()) ignore the pairs
+// that cross nowhere on it, whatever intervals say (coplanar faces touching all along).
 
 #ifndef CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H
 #define CGAL_PMSUM_INTERNAL_SEGMENT_SEARCH_H
@@ -104,6 +106,19 @@ class Segment_search
 {
 public:
   explicit Segment_search(Cd_filter& filter) : m_filter(filter) {}
+
+  /// Starts the segments of the plane H of the triangle F (exact corners, not collinear):
+  /// until the next call, every segment searched lies in H, its side (if any) is parallel to
+  /// H, and its points are perturbed along `directions` (count of them). The item pairs that
+  /// cross nowhere on H (Cd_filter::on_plane(), exact) are then neither searched nor tested
+  /// by the queries (Cd_filter::set_point_on_plane()): most of those that touch along the
+  /// segment (coplanar faces), which only exact tests could decide.
+  /// Sets the CD filter's plane (Cd_filter::set_plane()).
+  void start_plane(const std::array<Exact_point, 3>& F, const Direction* directions, std::uint32_t count)
+  {
+    m_filter.set_plane(F, directions, count);
+    m_in_plane = true;
+  }
 
   /// Number of segments searched.
   std::size_t searched_segments() const { return m_segments; }
@@ -180,7 +195,8 @@ public:
       std::size_t rep = e;
       while (rep <= end && rep % 2 == 0) ++rep;
       if (rep > end) rep = e;
-      if (free_at(s, roots, rep)) {
+      // The run holding the point 0 is free if covered_by_hops() found that point free.
+      if ((e == 0 && m_free_at_start) || free_at(s, roots, rep)) {
         ends.push_back(roots[e / 2]);             // a point, or an interval's left root
         ends.push_back(roots[(end + 1) / 2]);     // a point, or an interval's right root
       }
@@ -228,7 +244,7 @@ private:
     bool found = false;
     m_filter.for_each_overlapping_pair(hull(m_a, m_b), [&](Index u, Index v) {
       const Crossing_range range = m_filter.crossing_range(u, v, m_a, m_b);
-      if (range.misses_segment()) return false;
+      if (range.misses_segment() || (m_in_plane && m_filter.on_plane(u, v).never)) return false;
       m_pairs.emplace_back(u, v);
       m_ranges.push_back(range);
       if (!pair_covers(s, m_pairs.back(), range)) return false;
@@ -294,10 +310,12 @@ private:
   /// CD query on the element where the previous run ends (at most 16)? Cheap when many
   /// small items hide the segment one after the other (fine meshes), where no single pair
   /// crosses at both ends. The first run is `start`'s if intervals (`start_range`, its
-  /// crossing range) show it crosses at 0.
+  /// crossing range) show it crosses at 0. Sets m_free_at_start if its first query found the
+  /// point 0 free.
   bool covered_by_hops(const Translation_segment& s, const std::optional<std::pair<Index, Index>>& start,
                        const Crossing_range& start_range)
   {
+    m_free_at_start = false;
     Segment_parameter at = Segment_parameter::zero();
     bool on_gap = false; // the element: the point `at`, or the open interval just after it
     for (int hop = 0; hop < 16; ++hop) {
@@ -309,7 +327,10 @@ private:
       }
       if (!hit) {
         set_query(s.at(at), on_gap);
-        if (m_filter.is_free_here()) return false;
+        if (m_filter.is_free_here()) {
+          m_free_at_start = hop == 0;
+          return false;
+        }
         hit = m_filter.last_crossing();
         if (!hit || !m_filter.pair_crosses_here(hit->first, hit->second)) return false; // containment
         range = m_filter.crossing_range(hit->first, hit->second, m_a, m_b);
@@ -375,7 +396,9 @@ private:
   /// (if any), then along the directions.
   void set_query(const Exact_point& x, bool forward)
   {
-    m_filter.set_point(x, m_directions, m_count, {forward ? &m_forward : m_side, forward ? m_side : nullptr});
+    const Cd_filter::Prefix prefix = {forward ? &m_forward : m_side, forward ? m_side : nullptr};
+    if (m_in_plane) m_filter.set_point_on_plane(x, prefix);
+    else m_filter.set_point(x, m_directions, m_count, prefix);
   }
 
   bool free_at(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)
@@ -412,6 +435,8 @@ private:
   std::uint32_t m_count = 0;
   Vec3<Exact_nt> m_forward;
   const Vec3<Exact_nt>* m_side = nullptr;
+  bool m_in_plane = false; // start_plane() was called
+  bool m_free_at_start = false; // covered_by_hops() found the point 0 of the segment free
   Vec3<Interval> m_a, m_b; // enclosures of the segment's ends
   std::vector<std::pair<Index, Index>> m_pairs;
   std::vector<Crossing_range> m_ranges;

@@ -375,6 +375,10 @@ public:
   /// narrow strips, Strips::followed), each searched once.
   void search_segments()
   {
+    const auto facet = m_lattice.facet_corners();
+    std::array<Exact_point, 3> F;
+    for (int k = 0; k < 3; ++k) F[k] = exact_sum(m_p, facet[k].first, m_q, facet[k].second);
+    m_search.start_plane(F, m_directions, m_fp.number_of_directions);
     std::vector<Segment_parameter> ends;
     for (std::size_t n = 0; n < m_to_search.size(); ++n) {
       const Segment ab = m_to_search[n];
@@ -432,10 +436,7 @@ public:
       for (int k = 0; k < 3; ++k) has_ends = has_ends || m_segments[segment(cell, k)].has_ends;
       if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
       if (!started) {
-        const auto facet = m_lattice.facet_corners();
-        std::array<Exact_point, 3> F;
-        for (int k = 0; k < 3; ++k) F[k] = exact_sum(m_p, facet[k].first, m_q, facet[k].second);
-        islands.start_facet(F, m_directions, m_fp.number_of_directions);
+        islands.start_facet(m_directions, m_fp.number_of_directions); // the plane of search_segments()
         started = true;
       }
       const std::optional<Cell_weights> w = islands.island_point({point(cell[0]), point(cell[1]), point(cell[2])});
