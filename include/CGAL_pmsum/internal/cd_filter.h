@@ -385,7 +385,6 @@ public:
   {
     Crossing_range r;
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
-    if (parallel_triangles(u, v)) { r.low = HUGE_VAL; return r; } // crosses nowhere
     CGAL::Protect_FPU_rounding<true> guard;
     bool inside_known = true;
     r.in_from = -HUGE_VAL; r.in_to = HUGE_VAL;
@@ -421,7 +420,6 @@ public:
     using Where = Crossing_slabs::Where;
     std::pair<Crossing_slabs, Where> r{{}, Where::border};
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
-    if (parallel_triangles(u, v)) return {{}, Where::outside};
     r.first.known = true;
     bool inside = true;
     for_each_slab(u, v, [&](int k, const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {

@@ -244,7 +244,8 @@ private:
     bool found = false;
     m_filter.for_each_overlapping_pair(hull(m_a, m_b), [&](Index u, Index v) {
       const Crossing_range range = m_filter.crossing_range(u, v, m_a, m_b);
-      if (range.misses_segment() || (m_in_plane && m_filter.on_plane(u, v).never)) return false;
+      if (range.misses_segment() || m_filter.parallel_triangles(u, v) || (m_in_plane && m_filter.on_plane(u, v).never))
+        return false;
       m_pairs.emplace_back(u, v);
       m_ranges.push_back(range);
       if (!pair_covers(s, m_pairs.back(), range)) return false;
