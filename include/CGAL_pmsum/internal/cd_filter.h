@@ -334,7 +334,10 @@ public:
   }
 
   /// Calls f(a, b, c, d) for every orientation predicate that the test of the pair (u, v)
-  /// can evaluate: its answer depends only on their signs.
+  /// can evaluate: its answer depends only on their signs. An edge of A against an edge of
+  /// B and that edge of B against that edge of A are one affine function of the
+  /// translation (det(b2 - b1, a1 + t - b1, a2 - a1) = det(a2 - a1, b1 - a1 - t, b2 - b1)):
+  /// listed once, B's edges against A's only when B is a bare edge.
   template <class F>
   void for_each_predicate(Index u, Index v, const F& f) const
   {
@@ -354,7 +357,7 @@ public:
         for (int k = 0; k < 3; ++k) f(E[i], E[(i + 1) % ne], T[k], T[(k + 1) % 3]);
     };
     if (ns == 3) edges_against(A, nm, B);
-    if (nm == 3) edges_against(B, ns, A);
+    else if (nm == 3) edges_against(B, ns, A);
   }
 
   /// Enclosures of D(0) and g of the predicate (a, b, c, d): single points where double
