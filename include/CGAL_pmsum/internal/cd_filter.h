@@ -471,25 +471,43 @@ public:
   }
 
   /// Calls f(k, w, lo, hi) for the eleven axes w = axis(u, v, k): lo < w.t < hi for every
-  /// t in B - A (enclosures), until f returns false. Skips zero axes. Needs rounding
-  /// towards +infinity.
+  /// t in B - A (enclosures), until f returns false. Skips zero axes. A pair's slabs depend
+  /// on it alone, and the segments and cells of a facet meet the same pairs again and again:
+  /// they are computed once (slabs()). Needs rounding towards +infinity.
   template <class F>
   void for_each_slab(Index u, Index v, const F& f) const
   {
-    for (int k = 0; k < 11; ++k)
-      if (!slab(u, v, k, axis<Interval>(u, v, k), f)) return;
+    for (const Slab& s : slabs(u, v))
+      if (!f(s.axis, s.w, s.lo, s.hi)) return;
   }
 
-  /// f(k, w, lo, hi) for the extent [lo, hi] of B - A along w (any w: B - A is the convex
-  /// hull of the B_k - A_i): lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i.
-  /// Skips the zero vector (returns true).
-  template <class F>
-  bool slab(Index u, Index v, int k, const Vec3<Interval>& w, const F& f) const
+  /// The slabs of B - A (triangles A = u, B = v) along its non-zero axes: w, and the extent
+  /// [lo, hi] of B - A along w (any w: B - A is the convex hull of the B_k - A_i):
+  /// lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i. Cached (up to
+  /// max_cached_slabs pairs; then the cache starts again). Needs rounding towards +infinity.
+  struct Slab
   {
-    if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
-      return true;
-    const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
-    return f(k, w, b.first - a.second, b.second - a.first);
+    int axis;
+    Vec3<Interval> w;
+    Interval lo, hi;
+  };
+  using Pair_slabs = boost::container::static_vector<Slab, 11>;
+  static constexpr std::size_t max_cached_slabs = std::size_t(1) << 14;
+  const Pair_slabs& slabs(Index u, Index v) const
+  {
+    const std::uint64_t key = std::uint64_t(u) << 32 | v;
+    auto it = m_slabs.find(key);
+    if (it != m_slabs.end()) return it->second;
+    if (m_slabs.size() >= max_cached_slabs) m_slabs.clear();
+    Pair_slabs r;
+    for (int k = 0; k < 11; ++k) {
+      const Vec3<Interval> w = axis<Interval>(u, v, k);
+      if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
+        continue;
+      const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
+      r.push_back({k, w, b.first - a.second, b.second - a.first});
+    }
+    return m_slabs.emplace(key, r).first->second;
   }
 
   /// Starts a plane H of translations, that of the triangle T (exact corners, not
@@ -977,6 +995,7 @@ private:
     std::vector<Extent> moving, fixed;
     std::unordered_map<std::uint64_t, Plane_crossing> crossings; // on_plane(), of the pairs met
   } m_plane;
+  mutable std::unordered_map<std::uint64_t, Pair_slabs> m_slabs; // slabs(), of the pairs met
   std::array<Vec3<Interval>, 2> m_prefix_interval;
   Vec3<Interval> m_x;
   std::optional<std::pair<Vec3<Exact_nt>, Exact_nt>> m_exact_x;
