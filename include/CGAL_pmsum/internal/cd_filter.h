@@ -477,7 +477,7 @@ public:
   template <class F>
   void for_each_slab(Index u, Index v, const F& f) const
   {
-    for (const Slab& s : slabs(u, v))
+    for (const Crossing_slabs::Slab& s : slabs(u, v))
       if (!f(s.axis, s.w, s.lo, s.hi)) return;
   }
 
@@ -485,13 +485,7 @@ public:
   /// [lo, hi] of B - A along w (any w: B - A is the convex hull of the B_k - A_i):
   /// lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i. Cached (up to
   /// max_cached_slabs pairs; then the cache starts again). Needs rounding towards +infinity.
-  struct Slab
-  {
-    int axis;
-    Vec3<Interval> w;
-    Interval lo, hi;
-  };
-  using Pair_slabs = boost::container::static_vector<Slab, 11>;
+  using Pair_slabs = boost::container::static_vector<Crossing_slabs::Slab, 11>;
   static constexpr std::size_t max_cached_slabs = std::size_t(1) << 14;
   const Pair_slabs& slabs(Index u, Index v) const
   {
@@ -505,7 +499,7 @@ public:
       if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
         continue;
       const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
-      r.push_back({k, w, b.first - a.second, b.second - a.first});
+      r.push_back({w, b.first - a.second, b.second - a.first, k});
     }
     return m_slabs.emplace(key, r).first->second;
   }
