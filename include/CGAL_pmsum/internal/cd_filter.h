@@ -117,6 +117,33 @@ struct Affine_predicate
   Vec3<Exact_nt> g;
 };
 
+/// The key of the item pair (u, v) (u of the moving mesh, v of the static one) in the
+/// caches of a pair's facts.
+inline std::uint64_t pair_key(Index u, Index v) { return std::uint64_t(u) << 32 | v; }
+
+/// A fact of each item pair met, computed once: at most max_pairs facts are kept; then the
+/// cache starts again (a reference it returned is valid until the next get() or clear()).
+template <class T>
+class Pair_cache
+{
+public:
+  static constexpr std::size_t max_pairs = std::size_t(1) << 14;
+  /// The fact of the pair (u, v): compute(), the first time.
+  template <class F>
+  const T& get(Index u, Index v, const F& compute)
+  {
+    const std::uint64_t key = pair_key(u, v);
+    auto it = m_facts.find(key);
+    if (it != m_facts.end()) return it->second;
+    if (m_facts.size() >= max_pairs) m_facts.clear();
+    return m_facts.emplace(key, compute()).first->second;
+  }
+  void clear() { m_facts.clear(); }
+
+private:
+  std::unordered_map<std::uint64_t, T> m_facts;
+};
+
 /// What intervals tell of where an item pair crosses along a segment of translations
 /// x(l) = a + l (b - a), l in [0, 1]: never at l < low or l > high; at every l with
 /// in_from < l < in_to (any perturbation). Elsewhere: unknown (test it).
@@ -441,6 +468,7 @@ public:
   /// crossing set B - A is then flat (empty interior): they cross at no translation, once
   /// perturbed (every query is). Coplanar faces of CAD models touch so along whole facets of
   /// translations, where their predicates are zero and only the perturbation decides.
+  /// The exact test, needed where intervals do not tell (mostly parallel pairs), is cached.
   bool parallel_triangles(Index u, Index v) const
   {
     if (m_moving.is_edge(u) || m_static.is_edge(v)) return false;
@@ -450,8 +478,10 @@ public:
       for (int i = 0; i < 3; ++i)
         if (c[i].inf() > 0 || c[i].sup() < 0) return false;
     }
-    const Vec3<Exact_nt> a = axis<Exact_nt>(u, v, 0), b = axis<Exact_nt>(u, v, 1);
-    return is_null(cross(a, b)) && !is_null(a) && !is_null(b);
+    return m_parallel.get(u, v, [&] {
+      const Vec3<Exact_nt> a = axis<Exact_nt>(u, v, 0), b = axis<Exact_nt>(u, v, 1);
+      return is_null(cross(a, b)) && !is_null(a) && !is_null(b);
+    });
   }
 
   /// Axis k of the eleven normal to the facets of B - A (A: moving triangle u, B: static
@@ -483,25 +513,23 @@ public:
 
   /// The slabs of B - A (triangles A = u, B = v) along its non-zero axes: w, and the extent
   /// [lo, hi] of B - A along w (any w: B - A is the convex hull of the B_k - A_i):
-  /// lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i. Cached (up to
-  /// max_cached_slabs pairs; then the cache starts again). Needs rounding towards +infinity.
+  /// lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i. Cached. Needs rounding
+  /// towards +infinity.
   using Pair_slabs = boost::container::static_vector<Crossing_slabs::Slab, 11>;
-  static constexpr std::size_t max_cached_slabs = std::size_t(1) << 14;
   const Pair_slabs& slabs(Index u, Index v) const
   {
-    const std::uint64_t key = std::uint64_t(u) << 32 | v;
-    auto it = m_slabs.find(key);
-    if (it != m_slabs.end()) return it->second;
-    if (m_slabs.size() >= max_cached_slabs) m_slabs.clear();
-    Pair_slabs r;
-    for (int k = 0; k < 11; ++k) {
-      const Vec3<Interval> w = axis<Interval>(u, v, k);
-      if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
-        continue;
-      const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
-      r.push_back({w, b.first - a.second, b.second - a.first, k});
-    }
-    return m_slabs.emplace(key, r).first->second;
+    return m_slabs.get(u, v, [&] {
+      Pair_slabs r;
+      for (int k = 0; k < 11; ++k) {
+        const Vec3<Interval> w = axis<Interval>(u, v, k);
+        if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 &&
+            w[2].inf() == 0)
+          continue;
+        const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
+        r.push_back({w, b.first - a.second, b.second - a.first, k});
+      }
+      return r;
+    });
   }
 
   /// Starts a plane H of translations, that of the triangle T (exact corners, not
@@ -557,10 +585,7 @@ public:
   };
   const Plane_crossing& on_plane(Index u, Index v)
   {
-    const std::uint64_t key = std::uint64_t(u) << 32 | v;
-    auto it = m_plane.crossings.find(key);
-    if (it == m_plane.crossings.end()) it = m_plane.crossings.emplace(key, plane_crossing(u, v)).first;
-    return it->second;
+    return m_plane.crossings.get(u, v, [&] { return plane_crossing(u, v); });
   }
 
   /// Does the slab of the pair (u, v) normal to the plane H set by set_plane() hold every
@@ -987,9 +1012,10 @@ private:
     CGAL::Sign side = CGAL::ZERO; // of the perturbation, along exact_normal
     std::uint64_t stamp = 0;
     std::vector<Extent> moving, fixed;
-    std::unordered_map<std::uint64_t, Plane_crossing> crossings; // on_plane(), of the pairs met
+    Pair_cache<Plane_crossing> crossings; // on_plane(), of the pairs met
   } m_plane;
-  mutable std::unordered_map<std::uint64_t, Pair_slabs> m_slabs; // slabs(), of the pairs met
+  mutable Pair_cache<Pair_slabs> m_slabs; // slabs()
+  mutable Pair_cache<bool> m_parallel;    // parallel_triangles(), where intervals do not tell
   std::array<Vec3<Interval>, 2> m_prefix_interval;
   Vec3<Interval> m_x;
   std::optional<std::pair<Vec3<Exact_nt>, Exact_nt>> m_exact_x;

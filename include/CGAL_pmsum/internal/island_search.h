@@ -171,7 +171,7 @@ private:
   /// The pair's Plane_pair, computed on first use in the facet.
   Plane_pair& on_plane(const Pair& pair)
   {
-    const std::uint64_t key = std::uint64_t(pair.first) << 32 | pair.second;
+    const std::uint64_t key = pair_key(pair.first, pair.second);
     auto it = m_on_plane.find(key);
     if (it == m_on_plane.end()) it = m_on_plane.emplace(key, Plane_pair{m_filter.on_plane(pair.first, pair.second)}).first;
     return it->second;
