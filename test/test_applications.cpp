@@ -603,6 +603,60 @@ TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", 
   CHECK(faces(tiny).size() == 12);
 }
 
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+
+TEST_CASE("orient_manifold_triangles: what CGAL's orient_polygon_soup and is_polygon_soup_a_polygon_mesh tell",
+          "[applications][mesh]")
+{
+  using Triangles = std::vector<std::array<std::size_t, 3>>;
+  // CGAL's answer and orientation (on a copy, with points to duplicate into).
+  auto cgal = [](const Triangles& t, std::size_t points) {
+    std::vector<IK::Point_3> p(points);
+    std::vector<std::vector<std::size_t>> polygons;
+    for (const auto& f : t) polygons.push_back({f[0], f[1], f[2]});
+    const bool ok = CGAL::Polygon_mesh_processing::orient_polygon_soup(p, polygons) &&
+                    CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+    Triangles oriented;
+    for (const auto& f : polygons) oriented.push_back({f[0], f[1], f[2]});
+    return std::make_pair(ok, oriented);
+  };
+  auto agree = [&](Triangles t, std::size_t points) {
+    const auto [ok, oriented] = cgal(t, points);
+    const bool mine = CGAL::Pmsum::internal::orient_manifold_triangles(t);
+    CHECK(mine == ok);
+    if (mine && ok) CHECK(t == oriented);
+    return mine;
+  };
+  // An octahedron (points +x -x +y -y +z -z), its faces in mixed orientations and order:
+  // oriented, every edge run once each way.
+  Triangles octahedron;
+  for (std::size_t x : {0, 1})
+    for (std::size_t y : {2, 3})
+      for (std::size_t z : {4, 5}) octahedron.push_back({x, y, z});
+  std::swap(octahedron[0], octahedron[5]);
+  REQUIRE(agree(octahedron, 6));
+  CGAL::Pmsum::internal::orient_manifold_triangles(octahedron);
+  std::set<std::pair<std::size_t, std::size_t>> runs;
+  for (const auto& f : octahedron)
+    for (int i = 0; i < 3; ++i) runs.insert({f[i], f[(i + 1) % 3]});
+  CHECK(runs.size() == 24);
+  CHECK(octahedron[0] == std::array<std::size_t, 3>{1, 2, 5}); // the first face keeps its way
+  // An open strip of four triangles, two of them reversed.
+  CHECK(agree({{0, 1, 2}, {1, 3, 2}, {2, 4, 3}, {4, 5, 3}}, 6));
+  // Not manifolds: a Moebius strip (five points), three triangles on one edge, two
+  // tetrahedra sharing a point; a triangle with a repeated point.
+  Triangles moebius;
+  for (std::size_t i = 0; i < 5; ++i) moebius.push_back({i, (i + 1) % 5, (i + 2) % 5});
+  CHECK(!agree(moebius, 5));
+  CHECK(!agree({{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}, 5));
+  Triangles pinched = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+  for (std::size_t i = 0; i < 4; ++i)
+    pinched.push_back({pinched[i][0] == 0 ? 0 : pinched[i][0] + 3, pinched[i][1] + 3, pinched[i][2] + 3});
+  CHECK(!agree(pinched, 7));
+  Triangles repeated = {{0, 1, 1}}; // (CGAL's orient_polygon_soup does not return on it)
+  CHECK(!CGAL::Pmsum::internal::orient_manifold_triangles(repeated));
+}
+
 // The advancing front leaves holes on this box with a box-shaped void; plane by plane meshes
 // it (every point joins the planes it lies on, so the void's edges have their rows on both faces).
 TEST_CASE("mesh of a sum with a void: two shells, the void inward, within d of the exact boundary",

@@ -27,7 +27,6 @@
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -43,6 +42,7 @@
 #include <exception>
 #include <set>
 #include <thread>
+#include <unordered_map>
 #include <utility>
 #include <limits>
 #include <optional>
@@ -227,6 +227,102 @@ advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_const
   return triangles;
 }
 
+/// Orients `triangles` (point indices) consistently if they form an orientable 2-manifold
+/// (with or without border), as CGAL's orient_polygon_soup() would (each edge-connected
+/// component keeps the orientation of its first triangle; a triangle turned is reversed):
+/// true if they do; false (`triangles` then partly turned) if a triangle repeats a point, an
+/// edge borders more than two triangles, the triangles at a point are not one fan (joined
+/// by their edges through it), or no orientation agrees along every edge. This is what
+/// orient_polygon_soup() and is_polygon_soup_a_polygon_mesh() tell together, in linear time
+/// (together they took 0.37 s on 87k triangles).
+inline bool orient_manifold_triangles(std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  const std::size_t n = triangles.size();
+  auto key = [](std::size_t a, std::size_t b) { return std::uint64_t((std::min)(a, b)) << 32 | (std::max)(a, b); };
+  // The triangles of each edge (the second n while it has one).
+  std::unordered_map<std::uint64_t, std::array<std::size_t, 2>> by_edge;
+  by_edge.reserve(2 * n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto& T = triangles[t];
+    CGAL_precondition(T[0] >> 32 == 0 && T[1] >> 32 == 0 && T[2] >> 32 == 0);
+    if (T[0] == T[1] || T[1] == T[2] || T[2] == T[0]) return false;
+    for (int i = 0; i < 3; ++i) {
+      const auto [it, first] = by_edge.try_emplace(key(T[i], T[(i + 1) % 3]), std::array<std::size_t, 2>{t, n});
+      if (first) continue;
+      if (it->second[1] != n) return false;
+      it->second[1] = t;
+    }
+  }
+  auto across = [&](std::size_t t, std::size_t a, std::size_t b) { // the other triangle of edge ab, or n
+    const auto& e = by_edge.find(key(a, b))->second;
+    return e[0] == t ? e[1] : e[0];
+  };
+  auto runs = [&](std::size_t t, std::size_t a, std::size_t b) { // does triangle t run from a to b?
+    const auto& T = triangles[t];
+    return (T[0] == a && T[1] == b) || (T[1] == a && T[2] == b) || (T[2] == a && T[0] == b);
+  };
+  // Orientation: from the first triangle of each component, a neighbour that runs along a
+  // shared edge the same way is reversed.
+  std::vector<bool> oriented(n, false);
+  std::vector<std::size_t> stack;
+  for (std::size_t s = 0; s < n; ++s) {
+    if (oriented[s]) continue;
+    oriented[s] = true;
+    stack.assign(1, s);
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t a = triangles[t][i], b = triangles[t][(i + 1) % 3], u = across(t, a, b);
+        if (u == n) continue;
+        const bool same_way = runs(u, a, b);
+        if (oriented[u]) {
+          if (same_way) return false;
+          continue;
+        }
+        if (same_way) std::reverse(triangles[u].begin(), triangles[u].end());
+        oriented[u] = true;
+        stack.push_back(u);
+      }
+    }
+  }
+  // One fan per point: the triangles at p, joined across their edges through p.
+  std::vector<std::size_t> start(1, 0), at; // the triangles at point p: at[start[p] .. start[p + 1])
+  for (const auto& T : triangles)
+    for (std::size_t p : T) {
+      if (p + 2 > start.size()) start.resize(p + 2, 0);
+      ++start[p + 1];
+    }
+  for (std::size_t p = 1; p < start.size(); ++p) start[p] += start[p - 1];
+  at.resize(3 * n);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < n; ++t)
+      for (std::size_t p : triangles[t]) at[next[p]++] = t;
+  }
+  std::vector<std::size_t> seen(n, 0); // p + 1: reached from the first triangle at p
+  for (std::size_t p = 0; p + 1 < start.size(); ++p) {
+    if (start[p] == start[p + 1]) continue;
+    std::size_t reached = 1;
+    seen[at[start[p]]] = p + 1;
+    stack.assign(1, at[start[p]]);
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      for (std::size_t q : triangles[t]) {
+        if (q == p) continue;
+        const std::size_t u = across(t, p, q);
+        if (u == n || seen[u] == p + 1) continue;
+        seen[u] = p + 1;
+        ++reached;
+        stack.push_back(u);
+      }
+    }
+    if (reached != start[p + 1] - start[p]) return false;
+  }
+  return true;
+}
+
 /// Makes `triangles` (indices into `points`, a d-covering) into `mesh`, oriented to bound a
 /// volume: holes closed, crossings cut and closed again, bubbles removed. Returns the mesh's
 /// checks; the mesh is left empty if the triangles do not form an oriented manifold.
@@ -235,13 +331,10 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points,
                                 const std::vector<std::array<std::size_t, 3>>& triangles, double d, TriangleMesh& mesh)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  std::vector<std::vector<std::size_t>> polygons;
-  polygons.reserve(triangles.size());
-  for (const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
-  std::vector<Point> soup_points(points); // orient_polygon_soup may duplicate non-manifold vertices
+  std::vector<std::array<std::size_t, 3>> polygons(triangles);
   clear(mesh);
-  if (!PMP::orient_polygon_soup(soup_points, polygons) || !PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    return Mesh_checks{}; // not orientable, or not a manifold mesh
+  if (!orient_manifold_triangles(polygons)) return Mesh_checks{}; // not orientable, or not a manifold mesh
+  std::vector<Point> soup_points(points);
   PMP::remove_isolated_points_in_polygon_soup(soup_points, polygons); // points the triangles left out
   PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, mesh);
   fill_holes(mesh, 3 * d);
