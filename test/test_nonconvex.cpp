@@ -59,6 +59,46 @@ TEST_CASE("L-shape + cube, records report the reflex crease exactly", "[nonconve
   CHECK(on_crease >= 10);
 }
 
+TEST_CASE("flat faces cut into many triangles are triangulated again without their inner vertices", "[nonconvex][input]")
+{
+  using namespace CGAL::Pmsum::internal;
+  auto merged = [](const Soup& s) {
+    const Mesh m = to_mesh<Mesh>(s);
+    Mesh_descriptors<Mesh> desc;
+    return make_mesh_data(m, get(CGAL::vertex_point, m), false, false, "P", desc, true, /*merge_flat=*/true);
+  };
+  auto used = [](const Mesh_data& m) {
+    std::size_t n = 0;
+    for (Index v = 0; v < m.number_of_vertices(); ++v) n += !m.vertex_is_isolated(v);
+    return n;
+  };
+  // A cube or an L cut k times: the points inside its faces and inside its edges go, and
+  // what is left has the uncut shape's counts.
+  for (int k : {0, 1, 3})
+    for (const Soup& shape : {box({0, 0, 0}, {1, 1, 1}), l_shape(), rotated(l_shape())}) {
+      INFO("shape of " << shape.points.size() << " vertices cut " << k << " times");
+      const Mesh_data m = merged(subdivided(shape, k));
+      CHECK(used(m) == shape.points.size());
+      CHECK(m.number_of_triangles() == shape.triangles.size());
+      CHECK(m.number_of_edges() == 3 * shape.triangles.size() / 2);
+      CHECK(m.components.size() == 1);
+      CHECK(!merge_planar_patches(m.points, m.triangles)); // nothing left to merge
+    }
+  // The sums stay exact and covering, with or without -P, and cost about what the uncut shapes cost.
+  const Soup L = subdivided(l_shape(), 2), B = subdivided(box({0, 0, 0}, {0.5, 0.5, 0.5}), 2);
+  const Result cut = check_net_and_all(L, B, 0.1, Reference(L, B), CGAL::parameters::merge_flat_regions(true)).second;
+  const Result whole = check(l_shape(), box({0, 0, 0}, {0.5, 0.5, 0.5}), 0.1);
+  CHECK(cut.stats.candidates < 2 * whole.stats.candidates);
+  check_net_and_all(L, B, 0.1, Reference(L, B, true), CGAL::parameters::merge_flat_regions(true).negate_first_mesh(true));
+  // Without the parameter the meshes are taken as they are.
+  const Result as_is = run(L, B, 0.1);
+  CHECK(as_is.stats.candidates > 4 * whole.stats.candidates);
+  // A point inside a new edge (a diagonal, or edges joined along a crease) is named by a face.
+  std::size_t inside_faces = 0;
+  for (const Record& r : cut.records) inside_faces += r.origin_p.dimension == 2 && r.origin_p.weights[2] == 0;
+  CHECK(inside_faces > 0);
+}
+
 TEST_CASE("paper's blocks (non-manifold) + cube of the square's size", "[nonconvex][blocks][long]")
 {
   // 3x3 checkerboard: the sum is the full box [0,4]x[0,4]x[0,1.5]. Where four block sums

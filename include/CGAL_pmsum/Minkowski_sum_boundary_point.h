@@ -25,6 +25,13 @@ namespace Pmsum {
 /// Where a sample of a mesh lies: a vertex, an edge or a face, and its exact position
 /// `sum_i weights[i] * point(vertices[i]) / denominator` (unused weights are 0).
 ///
+/// With `merge_flat_regions(true)`, a flat region of the mesh cut into many triangles (coplanar
+/// faces with vertices inside the region, or inside the straight creases between regions) is sampled as the same region
+/// triangulated again without those vertices (the same solid, much less work). A sample on an
+/// edge of the new triangulation that is no edge of the mesh has `dimension == 2` and names as
+/// `face` one face of the region, not necessarily one it lies in (it may lie on the region's
+/// border); `vertices` are vertices of the mesh and the position stays exact.
+///
 /// \tparam PolygonMesh the type of the mesh (`PolygonMeshP` or `PolygonMeshQ` of
 ///         point_minkowski_sum()), a model of `FaceGraph`
 template <class PolygonMesh>

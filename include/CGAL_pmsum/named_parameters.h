@@ -39,6 +39,7 @@ enum statistics_t { statistics };
 enum treat_as_surface_t { treat_as_surface };
 enum maximum_number_of_candidates_t { maximum_number_of_candidates };
 enum check_overlaps_t { check_overlaps };
+enum merge_flat_regions_t { merge_flat_regions };
 enum roadmap_neighbors_t { roadmap_neighbors };
 enum mesh_statistics_t { mesh_statistics };
 enum communicator_t { communicator };
@@ -148,6 +149,16 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_parameters<bool, internal_np::check_overlaps_t, Named_parameters>
   check_overlaps(bool b) const { return {b, *this}; }
 
+  /// Triangulate the flat regions of P and Q again first, without the vertices inside them and
+  /// inside their straight creases (exact coplanarity and collinearity; the same solids), so
+  /// that a tessellated CAD part costs what its uncut faces cost (default `false`). Records
+  /// of samples on an edge of the new triangulation that is no edge of the mesh then name a
+  /// face of the region (see Mesh_feature) rather than the feature they lie on.
+  /// \param b `true` or `false`
+  /// \returns this chain with the parameter added
+  Named_parameters<bool, internal_np::merge_flat_regions_t, Named_parameters>
+  merge_flat_regions(bool b) const { return {b, *this}; }
+
   /// Translational_motion_planner: join each roadmap node to its `k` nearest nodes
   /// (default 12). \pre k >= 1
   /// \param k the number of neighbours
@@ -227,6 +238,11 @@ negate_first_mesh(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal
 /// \copydoc CGAL::Pmsum::Named_parameters::check_overlaps
 inline Pmsum::Named_parameters<bool, Pmsum::internal_np::check_overlaps_t>
 check_overlaps(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::check_overlaps_t>(b); }
+
+/// \ingroup PkgPointMinkowskiSumNamedParameters
+/// \copydoc CGAL::Pmsum::Named_parameters::merge_flat_regions
+inline Pmsum::Named_parameters<bool, Pmsum::internal_np::merge_flat_regions_t>
+merge_flat_regions(bool b) { return Pmsum::Named_parameters<bool, Pmsum::internal_np::merge_flat_regions_t>(b); }
 
 /// \ingroup PkgPointMinkowskiSumNamedParameters
 /// \copydoc CGAL::Pmsum::Named_parameters::treat_as_surface

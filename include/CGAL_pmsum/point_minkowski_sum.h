@@ -78,7 +78,7 @@ namespace CGAL {
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,
-///        `treat_as_surface` (false: closed components of P are solids), `check_overlaps` (true),
+///        `treat_as_surface` (false: closed components of P are solids), `check_overlaps` (true), `merge_flat_regions` (false),
 ///        `communicator` (a `CGAL::Pmsum::Communicator*`, nullptr: one process; with ranks,
 ///        every rank calls this with the same input and returns the same output).
 /// \param np_q named parameters for Q: `vertex_point_map`, `treat_as_surface`

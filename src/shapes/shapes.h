@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace pmsum_shapes {
@@ -217,6 +218,33 @@ Mesh to_mesh(const Soup& s)
   Mesh m;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, m);
   return m;
+}
+
+/// Each triangle cut in four at its edges' midpoints (exact in binary floating point), `times`
+/// times: the same solid, with vertices inside its flat faces and on its creases.
+inline Soup subdivided(Soup s, int times = 1)
+{
+  for (int k = 0; k < times; ++k) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoint;
+    auto mid = [&](std::size_t a, std::size_t b) {
+      const auto key = std::minmax(a, b);
+      const auto [it, added] = midpoint.emplace(key, s.points.size());
+      if (added)
+        s.points.push_back({(s.points[a][0] + s.points[b][0]) / 2, (s.points[a][1] + s.points[b][1]) / 2,
+                            (s.points[a][2] + s.points[b][2]) / 2});
+      return it->second;
+    };
+    std::vector<std::array<std::size_t, 3>> triangles;
+    for (const auto& t : s.triangles) {
+      const std::size_t a = mid(t[0], t[1]), b = mid(t[1], t[2]), c = mid(t[2], t[0]);
+      triangles.push_back({t[0], a, c});
+      triangles.push_back({a, t[1], b});
+      triangles.push_back({c, b, t[2]});
+      triangles.push_back({a, b, c});
+    }
+    s.triangles = std::move(triangles);
+  }
+  return s;
 }
 
 /// Scales a soup (and its pieces) by a factor and translates it.

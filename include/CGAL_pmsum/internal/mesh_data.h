@@ -12,6 +12,7 @@
 
 #include <CGAL_pmsum/exceptions.h>
 #include <CGAL_pmsum/internal/exact_sign.h>
+#include <CGAL_pmsum/internal/planar_patches.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/box_intersection_d.h>
@@ -28,8 +29,10 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -107,7 +110,10 @@ struct Mesh_descriptors
   using GT = boost::graph_traits<PolygonMesh>;
   std::vector<typename GT::vertex_descriptor> vertices;
   std::vector<typename GT::halfedge_descriptor> edges; // halfedge from v[0] to v[1]
-  std::vector<typename GT::face_descriptor> faces;
+  std::vector<typename GT::face_descriptor> faces;        // after a merge: a face of the triangle's flat region
+  /// After merge_planar_patches(): for each edge, nothing if it is an edge of the mesh, else
+  /// (a diagonal of a retriangulated flat region) a face of that region. Empty without a merge.
+  std::vector<std::optional<typename GT::face_descriptor>> face_of_new_edge;
 };
 
 /// Vertex stars, connected components and their closedness, bare edges.
@@ -510,13 +516,76 @@ inline void check_total_orientation(const Mesh_data& m, const std::string& name)
                         "orientation, e.g. with PMP::reverse_face_orientations");
 }
 
+/// Replaces the triangles of `m` by those of `merged` (same vertices, same solid): the edges
+/// are rebuilt from them (the mesh's edges that are left keep their halfedges, in their order;
+/// a new diagonal gets a face of its region), and each triangle gets the face of its region
+/// that `merged.source` names. Leaves `m` as it is, and returns false, if a new diagonal
+/// joins two vertices that an edge of the mesh elsewhere joins too.
+template <class PolygonMesh>
+bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, const PolygonMesh& pm,
+                            const Planar_merge& merged)
+{
+  auto key = [](Index a, Index b) { return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); };
+  std::vector<std::uint64_t> used;
+  for (const auto& t : merged.triangles) for (int i = 0; i < 3; ++i) used.push_back(key(t[i], t[(i + 1) % 3]));
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+
+  // Edges: the old ones still used, in their order, then the new ones.
+  std::vector<Mesh_data::Edge> edges;
+  Mesh_descriptors<PolygonMesh> d;
+  std::unordered_map<std::uint64_t, Index> edge_of;
+  for (Index e = 0; e < m.edges.size(); ++e) {
+    const std::uint64_t k = key(m.edges[e].v[0], m.edges[e].v[1]);
+    if (!std::binary_search(used.begin(), used.end(), k)) continue;
+    edge_of.emplace(k, Index(edges.size()));
+    edges.push_back({m.edges[e].v, {no_index, no_index}, true});
+    d.edges.push_back(desc.edges[e]);
+    d.face_of_new_edge.push_back(std::nullopt);
+  }
+  std::vector<std::array<Index, 3>> triangle_edges(merged.triangles.size());
+  for (Index t = 0; t < merged.triangles.size(); ++t) {
+    d.faces.push_back(desc.faces[merged.source[t]]);
+    for (int i = 0; i < 3; ++i) {
+      const Index a = merged.triangles[t][i], b = merged.triangles[t][(i + 1) % 3];
+      const auto [it, added] = edge_of.emplace(key(a, b), Index(edges.size()));
+      if (added) {
+        edges.push_back({{a, b}, {no_index, no_index}, true});
+        d.edges.push_back(desc.edges.front()); // not an edge of the mesh: face_of_new_edge says what it is
+        d.face_of_new_edge.push_back(d.faces.back());
+      }
+      Mesh_data::Edge& e = edges[it->second];
+      Index& slot = e.v[0] == a ? e.f[0] : e.f[1];
+      if (slot != no_index) return false;
+      slot = t;
+      triangle_edges[t][i] = it->second;
+    }
+  }
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    Mesh_data::Edge& e = edges[i];
+    if (e.f[0] != no_index) continue;
+    if (d.face_of_new_edge[i]) return false; // a diagonal is never on a border
+    std::swap(e.v[0], e.v[1]);
+    std::swap(e.f[0], e.f[1]);
+    d.edges[i] = opposite(d.edges[i], pm);
+  }
+  m.triangles = merged.triangles;
+  m.triangle_edges = std::move(triangle_edges);
+  m.edges = std::move(edges);
+  d.vertices = std::move(desc.vertices);
+  desc = std::move(d);
+  return true;
+}
+
 /// Copies and checks `pm`. `name` ("P" or "Q") prefixes the error messages. With
 /// `as_surface`, closed components count as surfaces too (no volume). With `check_solids`,
 /// closed components must not cross themselves or each other, and each must be oriented
 /// as its nesting asks (see Solid_checker); without, only the total volume's sign is checked.
+/// With `merge_flat`, flat regions cut into many triangles are triangulated again first.
 template <class PolygonMesh, class VertexPointMap>
 Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate, bool as_surface,
-                         const std::string& name, Mesh_descriptors<PolygonMesh>& desc, bool check_solids = true)
+                         const std::string& name, Mesh_descriptors<PolygonMesh>& desc, bool check_solids = true,
+                         bool merge_flat = false)
 {
   using GT = boost::graph_traits<PolygonMesh>;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -595,6 +664,11 @@ Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate,
                             " is degenerate (its three vertices are collinear)");
     }
   }
+
+  // Flat regions cut into many triangles: the same region with fewer (planar_patches.h).
+  if (merge_flat)
+    if (const auto merged = merge_planar_patches(m.points, m.triangles))
+      adopt_merged_triangles(m, desc, pm, *merged);
 
   build_stars_and_components(m, as_surface);
 

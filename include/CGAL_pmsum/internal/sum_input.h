@@ -50,6 +50,7 @@ constexpr bool has_algorithm_parameter()
          has_parameter<NP, internal_np::negate_first_mesh_t>() || has_parameter<NP, internal_np::statistics_t>() ||
          has_parameter<NP, internal_np::maximum_number_of_candidates_t>() ||
          has_parameter<NP, internal_np::check_overlaps_t>() || has_parameter<NP, internal_np::roadmap_neighbors_t>() ||
+         has_parameter<NP, internal_np::merge_flat_regions_t>() ||
          has_parameter<NP, internal_np::mesh_statistics_t>() || has_parameter<NP, internal_np::communicator_t>() ||
          has_parameter<NP, CGAL::internal_np::callback_t>();
 }
@@ -62,14 +63,15 @@ auto vertex_point_map_of(const PolygonMesh& pm, const NP& np)
                                       get_const_property_map(CGAL::vertex_point, pm));
 }
 
-/// Copies and checks the mesh `pm` with its pack's `vertex_point_map` and `treat_as_surface`.
+/// Copies and checks the mesh `pm` with its pack's `vertex_point_map` and `treat_as_surface`
+/// (with `merge_flat`, its flat regions triangulated again: planar_patches.h).
 template <class PolygonMesh, class NP>
 Mesh_data read_mesh(const PolygonMesh& pm, const NP& np, bool negate, bool check_overlaps, const std::string& name,
-                    Mesh_descriptors<PolygonMesh>& desc)
+                    Mesh_descriptors<PolygonMesh>& desc, bool merge_flat = false)
 {
   const bool as_surface =
     parameters::choose_parameter(parameters::get_parameter(np, internal_np::treat_as_surface), false);
-  return make_mesh_data(pm, vertex_point_map_of(pm, np), negate, as_surface, name, desc, check_overlaps);
+  return make_mesh_data(pm, vertex_point_map_of(pm, np), negate, as_surface, name, desc, check_overlaps, merge_flat);
 }
 
 /// The statistics to fill: the pack's `statistics`, else `local`.
@@ -108,6 +110,7 @@ struct Sum_settings
     options.communicator = choose_parameter(get_parameter(np, internal_np::communicator), static_cast<Communicator*>(nullptr));
     negate_p = negation == Negation::always || choose_parameter(get_parameter(np, internal_np::negate_first_mesh), false);
     check_overlaps = choose_parameter(get_parameter(np, internal_np::check_overlaps), true);
+    merge_flat_regions = choose_parameter(get_parameter(np, internal_np::merge_flat_regions), false);
     stats = Statistics();
     check_covering_distance(d);
     start = Clock::now();
@@ -117,6 +120,7 @@ struct Sum_settings
   Pipeline_options options;
   bool negate_p = false;
   bool check_overlaps = true;
+  bool merge_flat_regions = false;
   Clock::time_point start;
 };
 
@@ -135,8 +139,8 @@ struct Prepared_sum : Sum_settings
   Prepared_sum(const PolygonMeshP& P, const PolygonMeshQ& Q, double d, const NamedParametersP& np_p,
                const NamedParametersQ& np_q, Statistics& local_stats, Negation negation = Negation::from_parameters)
     : Sum_settings(d, np_p, local_stats, negation),
-      mp(read_mesh(P, np_p, negate_p, check_overlaps, "P", desc_p)),
-      mq(read_mesh(Q, np_q, false, check_overlaps, "Q", desc_q))
+      mp(read_mesh(P, np_p, negate_p, check_overlaps, "P", desc_p, merge_flat_regions)),
+      mq(read_mesh(Q, np_q, false, check_overlaps, "Q", desc_q, merge_flat_regions))
   {}
 
   /// The pipeline's emit function writing records (or points) to `out` (sum_output.h).

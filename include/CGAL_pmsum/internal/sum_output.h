@@ -61,8 +61,12 @@ Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptor
   const Feature o = trim ? (side == 0 ? trim->origin_p : trim->origin_q) : s.origin;
   f.dimension = o.dimension;
   if (f.dimension == 0) f.vertex = desc.vertices[o.index];
-  else if (f.dimension == 1) f.halfedge = desc.edges[o.index];
-  else f.face = desc.faces[o.index];
+  else if (f.dimension == 2) f.face = desc.faces[o.index];
+  else if (desc.face_of_new_edge.empty() || !desc.face_of_new_edge[o.index]) f.halfedge = desc.edges[o.index];
+  else { // a diagonal of a flat region triangulated again: inside a face of the mesh
+    f.dimension = 2;
+    f.face = *desc.face_of_new_edge[o.index];
+  }
   for (int i = 0; i < 3; ++i) {
     f.vertices[i] = desc.vertices[s.vertices[i]];
     f.weights[i] = s.weights[i];
