@@ -112,7 +112,8 @@ struct Mesh_descriptors
   std::vector<typename GT::halfedge_descriptor> edges; // halfedge from v[0] to v[1]
   std::vector<typename GT::face_descriptor> faces;        // after a merge: a face of the triangle's flat region
   /// After merge_planar_patches(): for each edge, nothing if it is an edge of the mesh, else
-  /// (a diagonal of a retriangulated flat region) a face of that region. Empty without a merge.
+  /// (a diagonal of a flat region triangulated again, or collinear edges joined along a crease)
+  /// a face next to it. Empty without a merge.
   std::vector<std::optional<typename GT::face_descriptor>> face_of_new_edge;
 };
 
@@ -518,8 +519,8 @@ inline void check_total_orientation(const Mesh_data& m, const std::string& name)
 
 /// Replaces the triangles of `m` by those of `merged` (same vertices, same solid): the edges
 /// are rebuilt from them (the mesh's edges that are left keep their halfedges, in their order;
-/// a new diagonal gets a face of its region), and each triangle gets the face of its region
-/// that `merged.source` names. Leaves `m` as it is, and returns false, if a new diagonal
+/// a new edge gets a face of its region), and each triangle gets the face of its region that
+/// `merged.source` names. Leaves `m` and `desc` as they are, and returns false, if a new edge
 /// joins two vertices that an edge of the mesh elsewhere joins too.
 template <class PolygonMesh>
 bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, const PolygonMesh& pm,

@@ -10,11 +10,13 @@
 //
 // A region (a "patch") is a set of triangles joined through edges whose two triangles are
 // exactly coplanar and face the same way. A vertex of a patch is removed when the triangles
-// around it are one closed fan, all in the patch. A patch is triangulated again (constrained
+// around it are one closed fan, all in the patch; a vertex on the border between two patches
+// is removed when it lies strictly between its two border neighbours on a line (exactly) and
+// both patches are triangulated again. A patch is triangulated again (constrained
 // Delaunay, in the coordinate plane its normal is most aligned with) on its border edges,
 // and the new triangles are kept only if they tile exactly the region the old ones tiled:
 // the same border, no added vertex, the count Euler asks for, the same area (all decided
-// exactly). Any doubt keeps the patch as it was.
+// exactly). Any doubt keeps the patch as it was (and the border vertices it shares).
 
 #ifndef CGAL_PMSUM_INTERNAL_PLANAR_PATCHES_H
 #define CGAL_PMSUM_INTERNAL_PLANAR_PATCHES_H
