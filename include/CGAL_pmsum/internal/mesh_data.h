@@ -526,9 +526,8 @@ template <class PolygonMesh>
 bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, const PolygonMesh& pm,
                             const Planar_merge& merged)
 {
-  auto key = [](Index a, Index b) { return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); };
   std::vector<std::uint64_t> used;
-  for (const auto& t : merged.triangles) for (int i = 0; i < 3; ++i) used.push_back(key(t[i], t[(i + 1) % 3]));
+  for (const auto& t : merged.triangles) for (int i = 0; i < 3; ++i) used.push_back(edge_key(t[i], t[(i + 1) % 3]));
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
 
@@ -537,7 +536,7 @@ bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, c
   Mesh_descriptors<PolygonMesh> d;
   std::unordered_map<std::uint64_t, Index> edge_of;
   for (Index e = 0; e < m.edges.size(); ++e) {
-    const std::uint64_t k = key(m.edges[e].v[0], m.edges[e].v[1]);
+    const std::uint64_t k = edge_key(m.edges[e].v[0], m.edges[e].v[1]);
     if (!std::binary_search(used.begin(), used.end(), k)) continue;
     edge_of.emplace(k, Index(edges.size()));
     edges.push_back({m.edges[e].v, {no_index, no_index}, true});
@@ -549,7 +548,7 @@ bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, c
     d.faces.push_back(desc.faces[merged.source[t]]);
     for (int i = 0; i < 3; ++i) {
       const Index a = merged.triangles[t][i], b = merged.triangles[t][(i + 1) % 3];
-      const auto [it, added] = edge_of.emplace(key(a, b), Index(edges.size()));
+      const auto [it, added] = edge_of.emplace(edge_key(a, b), Index(edges.size()));
       if (added) {
         edges.push_back({{a, b}, {no_index, no_index}, true});
         d.edges.push_back(desc.edges.front()); // not an edge of the mesh: face_of_new_edge says what it is

@@ -52,6 +52,10 @@ struct Planar_merge
   std::size_t removed_vertices = 0;
 };
 
+/// The key of the edge between vertices a and b, whichever way it runs.
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b)
+{ return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); }
+
 namespace planar_patches {
 
 using Id = std::uint32_t;
@@ -65,8 +69,7 @@ inline std::vector<Id> twins(const std::vector<std::array<Id, 3>>& T)
   keyed.reserve(3 * T.size());
   for (Id t = 0; t < T.size(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const Id a = T[t][i], b = T[t][(i + 1) % 3];
-      keyed.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), 3 * t + i});
+      keyed.push_back({edge_key(T[t][i], T[t][(i + 1) % 3]), 3 * t + i});
     }
   std::sort(keyed.begin(), keyed.end());
   std::vector<Id> twin(3 * T.size(), none);
