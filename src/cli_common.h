@@ -263,9 +263,11 @@ const std::string sum_options_help = input_options_help +
   "                         but passages narrower than the sample spacing may be uncovered\n"
   "  --no-islands           do not search visible pieces inside one lattice cell (e.g. voids\n"
   "                         smaller than the sample spacing): faster, but those may be uncovered\n"
-  "  --merge-flat-regions   triangulate flat faces cut into many triangles again first, without\n"
-  "                         the vertices inside them and inside straight creases (exact; the\n"
-  "                         same solids): a tessellated CAD part costs what its faces cost\n"
+  "  --no-merge-flat-regions\n"
+  "                         sample the meshes as they are; by default flat faces cut into many\n"
+  "                         triangles are triangulated again first, without the vertices inside\n"
+  "                         them and inside straight creases (exact; the same solids), so that a\n"
+  "                         tessellated CAD part costs what its faces cost\n"
   "  --levels D1,D2,...     coarse to fine: first the larger covering distances D1 > D2 > ... > D\n"
   "                         (same unit as -d), each reusing the coarser work; sum writes level\n"
   "                         K to OUT with .levelK before the extension (validate: the last)\n"
@@ -273,7 +275,7 @@ const std::string sum_options_help = input_options_help +
   "  --force                run even if the estimated output exceeds the available memory\n";
 const std::vector<std::string> sum_valued = {"-d", "--scale-q", "--threads", "--levels"};
 const std::vector<std::string> sum_flags = {"--relative", "--negate-p", "--no-normal-filter", "--no-cd-filter", "--no-octree-filter", "--all-candidates",
-                                            "--no-trim-points", "--no-islands", "--merge-flat-regions", "--force", "--quiet", "--help", "-h"};
+                                            "--no-trim-points", "--no-islands", "--no-merge-flat-regions", "--force", "--quiet", "--help", "-h"};
 
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, K>;
 
@@ -302,7 +304,7 @@ struct Sum_input
   std::string p_path, q_path;
   Mesh P, Q;
   double d = 0, d_argument = 0, diagonal = 0, read_seconds = 0;
-  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, islands = true, merge_flat = false, force = false, quiet = false;
+  bool relative = false, negate = false, normal_filter = true, cd_filter = true, octree_filter = true, covering_net = true, trim_points = true, islands = true, merge_flat = true, force = false, quiet = false;
   int threads = 0; // 0: all cores
   // Called with the progress too (the Python module: Ctrl-C and its progress callback);
   // false cancels (CGAL::Pmsum::Operation_cancelled). The tool leaves it empty.
@@ -327,7 +329,7 @@ inline Sum_input read_sum_input(const Arguments& args)
   in.covering_net = !args.flag("--all-candidates");
   in.trim_points = !args.flag("--no-trim-points");
   in.islands = !args.flag("--no-islands");
-  in.merge_flat = args.flag("--merge-flat-regions");
+  in.merge_flat = !args.flag("--no-merge-flat-regions");
   in.force = args.flag("--force");
   if (args.has("--threads")) {
     const double t = args.number("--threads");

@@ -29,7 +29,7 @@ using Mesh = CGAL::Surface_mesh<IK::Point_3>;
 using Record = CGAL::Pmsum::Minkowski_sum_boundary_point<Mesh, Mesh, IK>;
 
 /// Is the record a trim-curve point (between lattice samples)?
-inline bool is_trim_point(const Record& r) { return r.origin_p.rational_weights || r.origin_q.rational_weights; }
+inline bool is_trim_point(const Record& r) { return r.on_trim_curve; }
 
 /// The points of the records that are lattice sums (not trim points).
 inline std::vector<IK::Point_3> lattice_points(const std::vector<Record>& records)

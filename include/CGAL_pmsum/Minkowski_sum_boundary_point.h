@@ -25,12 +25,12 @@ namespace Pmsum {
 /// Where a sample of a mesh lies: a vertex, an edge or a face, and its exact position
 /// `sum_i weights[i] * point(vertices[i]) / denominator` (unused weights are 0).
 ///
-/// With `merge_flat_regions(true)`, a flat region of the mesh cut into many triangles (coplanar
-/// faces with vertices inside the region, or inside the straight creases between regions) is sampled as the same region
-/// triangulated again without those vertices (the same solid, much less work). A sample on an
-/// edge of the new triangulation that is no edge of the mesh has `dimension == 2` and names as
-/// `face` one face of the region, not necessarily one it lies in (it may lie on the region's
-/// border); `vertices` are vertices of the mesh and the position stays exact.
+/// With `merge_flat_regions(true)` (the default), a flat region of the mesh cut into many
+/// triangles (coplanar faces with vertices inside the region, or inside the straight creases
+/// between regions) is sampled as the same region triangulated again without those vertices
+/// (the same solid, much less work). A point there is still named by the mesh's own feature
+/// that holds it (the lowest-dimensional one), with `rational_weights` over that feature's
+/// vertices.
 ///
 /// \tparam PolygonMesh the type of the mesh (`PolygonMeshP` or `PolygonMeshQ` of
 ///         point_minkowski_sum()), a model of `FaceGraph`
@@ -49,9 +49,11 @@ struct Mesh_feature
   std::array<vertex_descriptor, 3> vertices{}; ///< the vertices `weights` refer to (those of the feature)
   std::array<int, 3> weights{};  ///< integer barycentric weights over `vertices`, summing to `denominator`
   int denominator = 1;           ///< positive denominator of `weights`
-  /// Points on trim curves (between lattice samples, where a visible part of a convolution
-  /// facet ends): the exact barycentric weights over `vertices` (they sum to 1), used instead
-  /// of `weights / denominator`, which then hold the lattice sample the point was found from.
+  /// Where `weights / denominator` cannot give the point exactly: the exact barycentric
+  /// weights over `vertices` (they sum to 1), used instead. Set on trim curves (between lattice
+  /// samples, where a visible part of a convolution facet ends: `weights / denominator` then
+  /// hold the lattice sample the point was found from), and in flat regions triangulated
+  /// again (`merge_flat_regions`: `weights / denominator` then round them, denominator 2^20).
   std::optional<std::array<CGAL::Exact_rational, 3>> rational_weights;
 };
 
@@ -72,6 +74,9 @@ struct Minkowski_sum_boundary_point
   Mesh_feature<PolygonMeshP> origin_p; ///< the sample of `P` (on `P` itself, also when `negated_p`)
   Mesh_feature<PolygonMeshQ> origin_q; ///< the sample of `Q`
   bool negated_p = false;           ///< point = -sample_p + sample_q rather than sample_p + sample_q
+  /// a point on a trim curve (where a visible part of a convolution facet ends), found between
+  /// lattice sums; false for a lattice sum sample_p + sample_q
+  bool on_trim_curve = false;
 };
 
 /// \ingroup PkgPointMinkowskiSumSupport

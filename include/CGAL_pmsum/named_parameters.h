@@ -151,9 +151,8 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 
   /// Triangulate the flat regions of P and Q again first, without the vertices inside them and
   /// inside their straight creases (exact coplanarity and collinearity; the same solids), so
-  /// that a tessellated CAD part costs what its uncut faces cost (default `false`). Records
-  /// of samples on an edge of the new triangulation that is no edge of the mesh then name a
-  /// face of the region (see Mesh_feature) rather than the feature they lie on.
+  /// that a tessellated CAD part costs what its uncut faces cost (default `true`). Records
+  /// still name the mesh's own features, with exact weights (see Mesh_feature).
   /// \param b `true` or `false`
   /// \returns this chain with the parameter added
   Named_parameters<bool, internal_np::merge_flat_regions_t, Named_parameters>

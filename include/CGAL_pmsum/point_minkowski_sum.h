@@ -48,7 +48,7 @@ namespace CGAL {
 /// Every output point lies exactly on the boundary (decided with exact predicates and a
 /// symbolic perturbation, no tolerance), and the output is a `d`-covering of the boundary:
 /// every boundary point has an output point closer than `d`. By default it is a
-/// (d/2, d)-net: no two lattice points of the output (records without `rational_weights`)
+/// (d/2, d)-net: no two lattice points of the output (records not `on_trim_curve`)
 /// are closer than `d/2` (up to a margin of a few hundred
 /// units in the last place of the largest coordinate), and candidates closer than `d/2` to an
 /// output point are never CD-tested; `use_covering_net(false)` gives every boundary candidate
@@ -78,7 +78,7 @@ namespace CGAL {
 ///        `negate_first_mesh` (false), `callback` (a `std::function<bool(double)>` called with
 ///        the fraction done; returning false throws `CGAL::Pmsum::Operation_cancelled`),
 ///        `statistics` (a `CGAL::Pmsum::Statistics&` to fill), `maximum_number_of_candidates`,
-///        `treat_as_surface` (false: closed components of P are solids), `check_overlaps` (true), `merge_flat_regions` (false),
+///        `treat_as_surface` (false: closed components of P are solids), `check_overlaps` (true), `merge_flat_regions` (true),
 ///        `communicator` (a `CGAL::Pmsum::Communicator*`, nullptr: one process; with ranks,
 ///        every rank calls this with the same input and returns the same output).
 /// \param np_q named parameters for Q: `vertex_point_map`, `treat_as_surface`

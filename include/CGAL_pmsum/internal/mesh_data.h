@@ -111,10 +111,19 @@ struct Mesh_descriptors
   std::vector<typename GT::vertex_descriptor> vertices;
   std::vector<typename GT::halfedge_descriptor> edges; // halfedge from v[0] to v[1]
   std::vector<typename GT::face_descriptor> faces;        // after a merge: a face of the triangle's flat region
-  /// After merge_planar_patches(): for each edge, nothing if it is an edge of the mesh, else
-  /// (a diagonal of a flat region triangulated again, or collinear edges joined along a crease)
-  /// a face next to it. Empty without a merge.
-  std::vector<std::optional<typename GT::face_descriptor>> face_of_new_edge;
+
+  /// After merge_planar_patches() (else empty), to name the mesh's own features where the
+  /// samples of the new triangles lie (to_mesh_feature()): the mesh's triangles of each flat
+  /// region triangulated again, and for each triangle and each edge the index of its region,
+  /// or no_index where it is the mesh's own (an edge joined along a crease: either region's).
+  struct Old_triangle
+  {
+    std::array<Index, 3> v;
+    std::array<typename GT::halfedge_descriptor, 3> h; // h[i] from v[i] to v[(i + 1) % 3]
+    typename GT::face_descriptor f;
+  };
+  std::vector<std::vector<Old_triangle>> regions;
+  std::vector<Index> region_of_triangle, region_of_edge;
 };
 
 /// Vertex stars, connected components and their closedness, bare edges.
@@ -519,9 +528,10 @@ inline void check_total_orientation(const Mesh_data& m, const std::string& name)
 
 /// Replaces the triangles of `m` by those of `merged` (same vertices, same solid): the edges
 /// are rebuilt from them (the mesh's edges that are left keep their halfedges, in their order;
-/// a new edge gets a face of its region), and each triangle gets the face of its region that
-/// `merged.source` names. Leaves `m` and `desc` as they are, and returns false, if a new edge
-/// joins two vertices that an edge of the mesh elsewhere joins too.
+/// a new edge and a new triangle get their region, whose old triangles `desc` keeps), and each
+/// triangle gets the face of its region that `merged.source` names. Leaves `m` and `desc` as
+/// they are, and returns false, if a new edge joins two vertices that an edge of the mesh
+/// elsewhere joins too.
 template <class PolygonMesh>
 bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, const PolygonMesh& pm,
                             const Planar_merge& merged)
@@ -541,18 +551,31 @@ bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, c
     edge_of.emplace(k, Index(edges.size()));
     edges.push_back({m.edges[e].v, {no_index, no_index}, true});
     d.edges.push_back(desc.edges[e]);
-    d.face_of_new_edge.push_back(std::nullopt);
+    d.region_of_edge.push_back(no_index);
+  }
+  // The regions' old triangles, with their halfedges.
+  for (const auto& region : merged.regions) {
+    d.regions.emplace_back();
+    for (std::uint32_t t : region) {
+      typename Mesh_descriptors<PolygonMesh>::Old_triangle o{m.triangles[t], {}, desc.faces[t]};
+      for (int i = 0; i < 3; ++i) {
+        const Index e = m.triangle_edges[t][i];
+        o.h[i] = m.edges[e].v[0] == o.v[i] ? desc.edges[e] : opposite(desc.edges[e], pm);
+      }
+      d.regions.back().push_back(o);
+    }
   }
   std::vector<std::array<Index, 3>> triangle_edges(merged.triangles.size());
   for (Index t = 0; t < merged.triangles.size(); ++t) {
     d.faces.push_back(desc.faces[merged.source[t]]);
+    d.region_of_triangle.push_back(merged.region_of[t] == Planar_merge::kept ? no_index : Index(merged.region_of[t]));
     for (int i = 0; i < 3; ++i) {
       const Index a = merged.triangles[t][i], b = merged.triangles[t][(i + 1) % 3];
       const auto [it, added] = edge_of.emplace(edge_key(a, b), Index(edges.size()));
       if (added) {
         edges.push_back({{a, b}, {no_index, no_index}, true});
-        d.edges.push_back(desc.edges.front()); // not an edge of the mesh: face_of_new_edge says what it is
-        d.face_of_new_edge.push_back(d.faces.back());
+        d.edges.push_back(desc.edges.front()); // not an edge of the mesh: region_of_edge says where it is
+        d.region_of_edge.push_back(d.region_of_triangle.back());
       }
       Mesh_data::Edge& e = edges[it->second];
       Index& slot = e.v[0] == a ? e.f[0] : e.f[1];
@@ -564,7 +587,7 @@ bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, c
   for (std::size_t i = 0; i < edges.size(); ++i) {
     Mesh_data::Edge& e = edges[i];
     if (e.f[0] != no_index) continue;
-    if (d.face_of_new_edge[i]) return false; // a diagonal is never on a border
+    if (d.region_of_edge[i] != no_index) return false; // a diagonal is never on a border
     std::swap(e.v[0], e.v[1]);
     std::swap(e.f[0], e.f[1]);
     d.edges[i] = opposite(d.edges[i], pm);

@@ -49,6 +49,11 @@ struct Planar_merge
 {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint32_t> source;  // for each new triangle, an old triangle of its region
+  /// The old triangles of each region triangulated again, and for each new triangle the
+  /// index of its region there, or `kept` (an old triangle kept as it was).
+  std::vector<std::vector<std::uint32_t>> regions;
+  std::vector<std::uint32_t> region_of;
+  static constexpr std::uint32_t kept = std::numeric_limits<std::uint32_t>::max();
   std::size_t removed_vertices = 0;
 };
 
@@ -353,11 +358,14 @@ inline std::optional<Planar_merge> merge_planar_patches(const std::vector<std::a
     if (!fresh[p]) {
       result.triangles.push_back(triangles[t]);
       result.source.push_back(t);
+      result.region_of.push_back(Planar_merge::kept);
     } else if (p == t) { // the patch's first triangle stands for its region
       for (const auto& n : *fresh[p]) {
         result.triangles.push_back(n);
         result.source.push_back(t);
+        result.region_of.push_back(std::uint32_t(result.regions.size()));
       }
+      result.regions.push_back(members[p]);
     }
   }
   return result;

@@ -110,7 +110,7 @@ struct Sum_settings
     options.communicator = choose_parameter(get_parameter(np, internal_np::communicator), static_cast<Communicator*>(nullptr));
     negate_p = negation == Negation::always || choose_parameter(get_parameter(np, internal_np::negate_first_mesh), false);
     check_overlaps = choose_parameter(get_parameter(np, internal_np::check_overlaps), true);
-    merge_flat_regions = choose_parameter(get_parameter(np, internal_np::merge_flat_regions), false);
+    merge_flat_regions = choose_parameter(get_parameter(np, internal_np::merge_flat_regions), true);
     stats = Statistics();
     check_covering_distance(d);
     start = Clock::now();
@@ -120,7 +120,7 @@ struct Sum_settings
   Pipeline_options options;
   bool negate_p = false;
   bool check_overlaps = true;
-  bool merge_flat_regions = false;
+  bool merge_flat_regions = true;
   Clock::time_point start;
 };
 

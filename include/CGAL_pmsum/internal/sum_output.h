@@ -11,7 +11,9 @@
 #include <CGAL_pmsum/Minkowski_sum_boundary_point.h>
 #include <CGAL_pmsum/internal/pipeline.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <iterator>
 #include <type_traits>
 #include <utility>
@@ -51,21 +53,107 @@ struct Record_traits : std::false_type {};
 template <class P, class Q, class K>
 struct Record_traits<Minkowski_sum_boundary_point<P, Q, K>> : std::true_type { using Kernel = K; };
 
-/// Fills the public Mesh_feature of a sample s, or of side `side`'s part of the trim point of
-/// `trim` (s: that side's sample of its first corner).
+/// Where the point x (exact) of a flat region triangulated again lies among the region's
+/// old triangles (Mesh_descriptors::regions): the first that holds it, and x's exact
+/// barycentric weights over its corners. Those that rounded weights show far from x are
+/// tested last. Nothing only if no old triangle holds x (the regions tile the same area, so
+/// never).
+template <class OldTriangle>
+std::optional<std::pair<const OldTriangle*, std::array<CGAL::Exact_rational, 3>>>
+locate_in_region(const Mesh_data& M, const std::vector<OldTriangle>& region, const std::array<CGAL::Exact_rational, 3>& x)
+{
+  using Q = CGAL::Exact_rational;
+  // Weights over t's corners, in the coordinate plane t's normal is most aligned with (the
+  // region is flat: the same weights as in space).
+  auto weights = [&](const OldTriangle& t, auto nt, const auto& at) {
+    using NT = decltype(nt);
+    std::array<std::array<NT, 3>, 3> c;
+    for (int k = 0; k < 3; ++k) for (int j = 0; j < 3; ++j) c[k][j] = NT(M.points[t.v[k]][j]);
+    const auto n = cross(M.point<double>(t.v[1]) - M.point<double>(t.v[0]), M.point<double>(t.v[2]) - M.point<double>(t.v[0]));
+    int axis = 0;
+    for (int j = 1; j < 3; ++j) if (std::abs(n[j]) > std::abs(n[axis])) axis = j;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    auto orient = [&](const auto& a, const auto& b, const auto& q) { // (an NT, not an expression template of temporaries)
+      return NT((b[u] - a[u]) * (q[v] - a[v]) - (b[v] - a[v]) * (q[u] - a[u]));
+    };
+    const NT area = orient(c[0], c[1], c[2]);
+    return std::array<NT, 3>{orient(c[1], c[2], at) / area, orient(c[2], c[0], at) / area, orient(c[0], c[1], at) / area};
+  };
+  const std::array<double, 3> xd = {CGAL::to_double(x[0]), CGAL::to_double(x[1]), CGAL::to_double(x[2])};
+  for (const bool near : {true, false})
+    for (const OldTriangle& t : region) {
+      const std::array<double, 3> rounded = weights(t, 0., xd);
+      const bool looks_near = (std::min)({rounded[0], rounded[1], rounded[2]}) > -1e-6;
+      if (looks_near != near) continue;
+      const std::array<Q, 3> w = weights(t, Q(0), x);
+      if (CGAL::sign(w[0]) != CGAL::NEGATIVE && CGAL::sign(w[1]) != CGAL::NEGATIVE && CGAL::sign(w[2]) != CGAL::NEGATIVE)
+        return std::make_pair(&t, w);
+    }
+  return std::nullopt;
+}
+
+/// Names in f the feature of the mesh that holds x (exact), a point of region `region` of a
+/// flat region triangulated again: its lowest-dimensional feature among the region's old
+/// triangles, with x's exact weights over its vertices (the feature's first). Returns false
+/// (f unchanged) if no old triangle holds x.
 template <class PolygonMesh>
-Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptors<PolygonMesh>& desc,
+bool name_old_feature(Mesh_feature<PolygonMesh>& f, const Mesh_descriptors<PolygonMesh>& desc, const Mesh_data& M,
+                      Index region, const std::array<CGAL::Exact_rational, 3>& x)
+{
+  const auto found = locate_in_region(M, desc.regions[region], x);
+  if (!found) return false;
+  const auto& [t, w] = *found;
+  int nonzero = 0, first = 0;
+  for (int i = 0; i < 3; ++i) nonzero += CGAL::sign(w[i]) != CGAL::ZERO;
+  f.dimension = nonzero - 1;
+  // The corner listed first: the vertex; the edge's first end (its third corner has weight 0).
+  for (int i = 0; i < 3; ++i) {
+    const bool zero = CGAL::sign(w[i]) == CGAL::ZERO;
+    if ((f.dimension == 0 && !zero) || (f.dimension == 1 && zero)) first = f.dimension == 0 ? i : (i + 1) % 3;
+  }
+  if (f.dimension == 0) f.vertex = desc.vertices[t->v[first]];
+  else if (f.dimension == 1) f.halfedge = t->h[first];
+  else f.face = t->f;
+  std::array<CGAL::Exact_rational, 3> rotated;
+  constexpr int scale = 1 << 20;
+  for (int i = 0; i < 3; ++i) {
+    const int k = (first + i) % 3;
+    f.vertices[i] = desc.vertices[t->v[k]];
+    rotated[i] = w[k];
+    f.weights[i] = i < 2 ? int(std::lround(CGAL::to_double(w[k]) * scale)) : scale - f.weights[0] - f.weights[1];
+  }
+  f.denominator = scale;
+  f.rational_weights = rotated;
+  return true;
+}
+
+/// Fills the public Mesh_feature of a sample s of M, or of side `side`'s part of the trim
+/// point of `trim` (s: that side's sample of its first corner). In a flat region triangulated
+/// again (merge_flat_regions), the feature is the mesh's own that holds the point.
+template <class PolygonMesh>
+Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptors<PolygonMesh>& desc, const Mesh_data& M,
                                           const Trim* trim = nullptr, int side = 0)
 {
+  using Q = CGAL::Exact_rational;
   Mesh_feature<PolygonMesh> f;
   const Feature o = trim ? (side == 0 ? trim->origin_p : trim->origin_q) : s.origin;
-  f.dimension = o.dimension;
-  if (f.dimension == 0) f.vertex = desc.vertices[o.index];
-  else if (f.dimension == 2) f.face = desc.faces[o.index];
-  else if (desc.face_of_new_edge.empty() || !desc.face_of_new_edge[o.index]) f.halfedge = desc.edges[o.index];
-  else { // a diagonal of a flat region triangulated again: inside a face of the mesh
-    f.dimension = 2;
-    f.face = *desc.face_of_new_edge[o.index];
+  const std::vector<Index>& region_of = o.dimension == 1 ? desc.region_of_edge : desc.region_of_triangle;
+  const Index region = o.dimension > 0 && !region_of.empty() ? region_of[o.index] : no_index;
+  if (region != no_index) {
+    std::array<Q, 3> w, x = {Q(0), Q(0), Q(0)};
+    if (trim) w = trim_weights(s, *trim, side);
+    else for (int i = 0; i < 3; ++i) w[i] = Q(s.weights[i]) / Q(s.denominator);
+    for (int i = 0; i < 3; ++i)
+      if (CGAL::sign(w[i]) != CGAL::ZERO)
+        for (int c = 0; c < 3; ++c) x[c] += w[i] * Q(M.points[s.vertices[i]][c]);
+    if (name_old_feature(f, desc, M, region, x)) return f;
+    f.dimension = 2; // (never: a face of the region)
+    f.face = desc.regions[region].front().f;
+  } else {
+    f.dimension = o.dimension;
+    if (f.dimension == 0) f.vertex = desc.vertices[o.index];
+    else if (f.dimension == 1) f.halfedge = desc.edges[o.index];
+    else f.face = desc.faces[o.index];
   }
   for (int i = 0; i < 3; ++i) {
     f.vertices[i] = desc.vertices[s.vertices[i]];
@@ -113,7 +201,8 @@ auto make_emit(const Mesh_data& mp, const Mesh_data& mq, const Mesh_descriptors<
                                                       const Trim* trim) {
     if constexpr (records) {
       *out++ = Record{output_point<GT>(mp, mq, sp, sq, trim), output_normal<GT>(mp, mq, direction),
-                      to_mesh_feature(sp, desc_p, trim, 0), to_mesh_feature(sq, desc_q, trim, 1), negate_p};
+                      to_mesh_feature(sp, desc_p, mp, trim, 0), to_mesh_feature(sq, desc_q, mq, trim, 1), negate_p,
+                      trim != nullptr};
     } else if constexpr (!other_records) { // (else only the static_assert's message)
       *out++ = output_point<GT>(mp, mq, sp, sq, trim);
     }
