@@ -419,6 +419,7 @@ TEST_CASE("records into a Point_set_3: points, normals, provenance, PLY", "[appl
     CHECK(get(maps.origin_p, *it).dimension == recs[i].origin_p.dimension);
     CHECK(get(maps.origin_q, *it).face == recs[i].origin_q.face);
     CHECK(get(maps.origin_q_dimension, *it) == recs[i].origin_q.dimension);
+    CHECK(get(maps.on_trim_curve, *it) == int(recs[i].on_trim_curve));
   }
   // the dimensions travel through PLY
   std::stringstream ply;

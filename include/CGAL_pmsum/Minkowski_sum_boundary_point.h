@@ -52,8 +52,9 @@ struct Mesh_feature
   /// Where `weights / denominator` cannot give the point exactly: the exact barycentric
   /// weights over `vertices` (they sum to 1), used instead. Set on trim curves (between lattice
   /// samples, where a visible part of a convolution facet ends: `weights / denominator` then
-  /// hold the lattice sample the point was found from), and in flat regions triangulated
-  /// again (`merge_flat_regions`: `weights / denominator` then round them, denominator 2^20).
+  /// hold the lattice sample the point was found from), and on flat regions triangulated
+  /// again (`merge_flat_regions`, trim points too: `weights / denominator` then round them,
+  /// denominator 2^20, nonzero on the feature's vertices only).
   std::optional<std::array<CGAL::Exact_rational, 3>> rational_weights;
 };
 

@@ -46,13 +46,15 @@ struct Point_set_provenance
   typename Point_set::template Property_map<int> origin_p_dimension;
   /// property "origin_q_dimension": 0 vertex, 1 edge, 2 face (written to PLY)
   typename Point_set::template Property_map<int> origin_q_dimension;
+  /// property "on_trim_curve": 1 for a point on a trim curve, 0 for a lattice sum (written to PLY)
+  typename Point_set::template Property_map<int> on_trim_curve;
 };
 
 /// \ingroup PkgPointMinkowskiSumPointSet
 /// Inserts the records into `point_set`: each record's point, its unit outward normal (the
 /// normal map is added if missing), and its provenance in the properties "origin_p",
-/// "origin_q" (the records' `Mesh_feature`s) and "origin_p_dimension", "origin_q_dimension"
-/// (added if missing). Points of another kernel are converted through `double`.
+/// "origin_q" (the records' `Mesh_feature`s), "origin_p_dimension", "origin_q_dimension" and
+/// "on_trim_curve" (added if missing). Points of another kernel are converted through `double`.
 ///
 /// \tparam RecordRange a range of `Minkowski_sum_boundary_point<PolygonMeshP, PolygonMeshQ, K>`
 /// \tparam Point, Vector the point set's point and vector types
@@ -71,6 +73,7 @@ auto insert_into_point_set(const RecordRange& records, CGAL::Point_set_3<Point, 
   maps.origin_q = point_set.template add_property_map<Mesh_feature<MeshQ>>("origin_q").first;
   maps.origin_p_dimension = point_set.template add_property_map<int>("origin_p_dimension", -1).first;
   maps.origin_q_dimension = point_set.template add_property_map<int>("origin_q_dimension", -1).first;
+  maps.on_trim_curve = point_set.template add_property_map<int>("on_trim_curve", 0).first;
   point_set.add_normal_map();
   for (const Record& r : records) {
     const auto i = point_set.insert(
@@ -80,6 +83,7 @@ auto insert_into_point_set(const RecordRange& records, CGAL::Point_set_3<Point, 
     put(maps.origin_q, *i, r.origin_q);
     put(maps.origin_p_dimension, *i, r.origin_p.dimension);
     put(maps.origin_q_dimension, *i, r.origin_q.dimension);
+    put(maps.on_trim_curve, *i, int(r.on_trim_curve));
   }
   return maps;
 }

@@ -13,6 +13,7 @@
 #include <CGAL_pmsum/exceptions.h>
 #include <CGAL_pmsum/internal/exact_sign.h>
 #include <CGAL_pmsum/internal/planar_patches.h>
+#include <CGAL_pmsum/internal/region_locator.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/box_intersection_d.h>
@@ -113,16 +114,17 @@ struct Mesh_descriptors
   std::vector<typename GT::face_descriptor> faces;        // after a merge: a face of the triangle's flat region
 
   /// After merge_planar_patches() (else empty), to name the mesh's own features where the
-  /// samples of the new triangles lie (to_mesh_feature()): the mesh's triangles of each flat
-  /// region triangulated again, and for each triangle and each edge the index of its region,
-  /// or no_index where it is the mesh's own (an edge joined along a crease: either region's).
-  struct Old_triangle
+  /// points of the new triangles lie (to_mesh_feature()): for each flat region triangulated
+  /// again, its old triangles (the locator's), their halfedges (halfedges[t][i] from corner i
+  /// to corner i + 1) and faces; for each triangle and each edge the index of its region, or
+  /// no_index where it is the mesh's own (an edge joined along a crease: either region's).
+  struct Region
   {
-    std::array<Index, 3> v;
-    std::array<typename GT::halfedge_descriptor, 3> h; // h[i] from v[i] to v[(i + 1) % 3]
-    typename GT::face_descriptor f;
+    Region_locator locator;
+    std::vector<std::array<typename GT::halfedge_descriptor, 3>> halfedges;
+    std::vector<typename GT::face_descriptor> faces;
   };
-  std::vector<std::vector<Old_triangle>> regions;
+  std::vector<Region> regions;
   std::vector<Index> region_of_triangle, region_of_edge;
 };
 
@@ -553,17 +555,21 @@ bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, c
     d.edges.push_back(desc.edges[e]);
     d.region_of_edge.push_back(no_index);
   }
-  // The regions' old triangles, with their halfedges.
+  // The regions' old triangles, with their halfedges and faces.
   for (const auto& region : merged.regions) {
-    d.regions.emplace_back();
+    std::vector<std::array<Index, 3>> old;
+    std::vector<std::array<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 3>> halfedges;
+    std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> faces;
     for (std::uint32_t t : region) {
-      typename Mesh_descriptors<PolygonMesh>::Old_triangle o{m.triangles[t], {}, desc.faces[t]};
+      old.push_back(m.triangles[t]);
+      faces.push_back(desc.faces[t]);
+      halfedges.emplace_back();
       for (int i = 0; i < 3; ++i) {
         const Index e = m.triangle_edges[t][i];
-        o.h[i] = m.edges[e].v[0] == o.v[i] ? desc.edges[e] : opposite(desc.edges[e], pm);
+        halfedges.back()[i] = m.edges[e].v[0] == m.triangles[t][i] ? desc.edges[e] : opposite(desc.edges[e], pm);
       }
-      d.regions.back().push_back(o);
     }
+    d.regions.push_back({Region_locator(m.points, std::move(old)), std::move(halfedges), std::move(faces)});
   }
   std::vector<std::array<Index, 3>> triangle_edges(merged.triangles.size());
   for (Index t = 0; t < merged.triangles.size(); ++t) {

@@ -63,6 +63,25 @@ inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b)
 
 namespace planar_patches {
 
+/// The coordinate axis the normal of triangle abc is most aligned with (rounded), and the
+/// sign of the exact normal's component on it, if not zero: abc then projects to the other
+/// two axes' plane without degeneracy, and so does every triangle of its plane.
+inline std::optional<std::pair<int, CGAL::Sign>> projection_axis(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                          const std::array<double, 3>& c)
+{
+  auto normal = [&](auto nt) {
+    using NT = decltype(nt);
+    const Vec3<NT> A = to_nt<NT>(a);
+    return cross(to_nt<NT>(b) - A, to_nt<NT>(c) - A);
+  };
+  const Vec3<double> n = normal(0.);
+  int k = 0;
+  for (int i = 1; i < 3; ++i) if (std::abs(n[i]) > std::abs(n[k])) k = i;
+  const CGAL::Sign sign = filtered_sign([&](auto nt) { return normal(nt)[k]; });
+  if (sign == CGAL::ZERO) return std::nullopt;
+  return std::make_pair(k, sign);
+}
+
 using Id = std::uint32_t;
 constexpr Id none = std::numeric_limits<Id>::max();
 
@@ -185,11 +204,9 @@ struct Merger
     using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
     using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
 
-    const Vec3<double> n = normal<double>(old.front());
-    int k = 0;
-    for (int c = 1; c < 3; ++c) if (std::abs(n[c]) > std::abs(n[k])) k = c;
-    const CGAL::Sign nk = filtered_sign([&](auto nt) { return normal<decltype(nt)>(old.front())[k]; });
-    if (nk == CGAL::ZERO) return std::nullopt;
+    const auto axis = projection_axis(P[T[old.front()][0]], P[T[old.front()][1]], P[T[old.front()][2]]);
+    if (!axis) return std::nullopt;
+    const auto [k, nk] = *axis;
     const int u = (k + 1) % 3, w = (k + 2) % 3;
 
     // Border half-edges (those through a vertex that goes joined into one), their vertices,

@@ -53,54 +53,17 @@ struct Record_traits : std::false_type {};
 template <class P, class Q, class K>
 struct Record_traits<Minkowski_sum_boundary_point<P, Q, K>> : std::true_type { using Kernel = K; };
 
-/// Where the point x (exact) of a flat region triangulated again lies among the region's
-/// old triangles (Mesh_descriptors::regions): the first that holds it, and x's exact
-/// barycentric weights over its corners. Those that rounded weights show far from x are
-/// tested last. Nothing only if no old triangle holds x (the regions tile the same area, so
-/// never).
-template <class OldTriangle>
-std::optional<std::pair<const OldTriangle*, std::array<CGAL::Exact_rational, 3>>>
-locate_in_region(const Mesh_data& M, const std::vector<OldTriangle>& region, const std::array<CGAL::Exact_rational, 3>& x)
-{
-  using Q = CGAL::Exact_rational;
-  // Weights over t's corners, in the coordinate plane t's normal is most aligned with (the
-  // region is flat: the same weights as in space).
-  auto weights = [&](const OldTriangle& t, auto nt, const auto& at) {
-    using NT = decltype(nt);
-    std::array<std::array<NT, 3>, 3> c;
-    for (int k = 0; k < 3; ++k) for (int j = 0; j < 3; ++j) c[k][j] = NT(M.points[t.v[k]][j]);
-    const auto n = cross(M.point<double>(t.v[1]) - M.point<double>(t.v[0]), M.point<double>(t.v[2]) - M.point<double>(t.v[0]));
-    int axis = 0;
-    for (int j = 1; j < 3; ++j) if (std::abs(n[j]) > std::abs(n[axis])) axis = j;
-    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    auto orient = [&](const auto& a, const auto& b, const auto& q) { // (an NT, not an expression template of temporaries)
-      return NT((b[u] - a[u]) * (q[v] - a[v]) - (b[v] - a[v]) * (q[u] - a[u]));
-    };
-    const NT area = orient(c[0], c[1], c[2]);
-    return std::array<NT, 3>{orient(c[1], c[2], at) / area, orient(c[2], c[0], at) / area, orient(c[0], c[1], at) / area};
-  };
-  const std::array<double, 3> xd = {CGAL::to_double(x[0]), CGAL::to_double(x[1]), CGAL::to_double(x[2])};
-  for (const bool near : {true, false})
-    for (const OldTriangle& t : region) {
-      const std::array<double, 3> rounded = weights(t, 0., xd);
-      const bool looks_near = (std::min)({rounded[0], rounded[1], rounded[2]}) > -1e-6;
-      if (looks_near != near) continue;
-      const std::array<Q, 3> w = weights(t, Q(0), x);
-      if (CGAL::sign(w[0]) != CGAL::NEGATIVE && CGAL::sign(w[1]) != CGAL::NEGATIVE && CGAL::sign(w[2]) != CGAL::NEGATIVE)
-        return std::make_pair(&t, w);
-    }
-  return std::nullopt;
-}
-
 /// Names in f the feature of the mesh that holds x (exact), a point of region `region` of a
 /// flat region triangulated again: its lowest-dimensional feature among the region's old
-/// triangles, with x's exact weights over its vertices (the feature's first). Returns false
-/// (f unchanged) if no old triangle holds x.
+/// triangles (region_locator.h), with x's exact weights over its vertices (the feature's
+/// first; weights / denominator round them). Returns false (f unchanged) if no old triangle
+/// holds x.
 template <class PolygonMesh>
 bool name_old_feature(Mesh_feature<PolygonMesh>& f, const Mesh_descriptors<PolygonMesh>& desc, const Mesh_data& M,
                       Index region, const std::array<CGAL::Exact_rational, 3>& x)
 {
-  const auto found = locate_in_region(M, desc.regions[region], x);
+  const auto& r = desc.regions[region];
+  const auto found = r.locator.locate(M.points, x);
   if (!found) return false;
   const auto& [t, w] = *found;
   int nonzero = 0, first = 0;
@@ -111,16 +74,26 @@ bool name_old_feature(Mesh_feature<PolygonMesh>& f, const Mesh_descriptors<Polyg
     const bool zero = CGAL::sign(w[i]) == CGAL::ZERO;
     if ((f.dimension == 0 && !zero) || (f.dimension == 1 && zero)) first = f.dimension == 0 ? i : (i + 1) % 3;
   }
-  if (f.dimension == 0) f.vertex = desc.vertices[t->v[first]];
-  else if (f.dimension == 1) f.halfedge = t->h[first];
-  else f.face = t->f;
-  std::array<CGAL::Exact_rational, 3> rotated;
+  const auto& corners = r.locator.triangles()[t];
+  if (f.dimension == 0) f.vertex = desc.vertices[corners[first]];
+  else if (f.dimension == 1) f.halfedge = r.halfedges[t][first];
+  else f.face = r.faces[t];
+  // Rounded weights: those of the feature's vertices at least 1 (and summing to the
+  // denominator), the others 0, like a lattice sample's.
   constexpr int scale = 1 << 20;
+  std::array<CGAL::Exact_rational, 3> rotated;
+  int left = scale;
   for (int i = 0; i < 3; ++i) {
     const int k = (first + i) % 3;
-    f.vertices[i] = desc.vertices[t->v[k]];
+    f.vertices[i] = desc.vertices[corners[k]];
     rotated[i] = w[k];
-    f.weights[i] = i < 2 ? int(std::lround(CGAL::to_double(w[k]) * scale)) : scale - f.weights[0] - f.weights[1];
+    if (i < f.dimension) {
+      const long rounded = std::lround(CGAL::to_double(w[k]) * scale);
+      f.weights[i] = int((std::max)(1L, (std::min)(rounded, long(left - (f.dimension - i)))));
+    } else {
+      f.weights[i] = i == f.dimension ? left : 0;
+    }
+    left -= f.weights[i];
   }
   f.denominator = scale;
   f.rational_weights = rotated;
@@ -148,7 +121,7 @@ Mesh_feature<PolygonMesh> to_mesh_feature(const Sample& s, const Mesh_descriptor
         for (int c = 0; c < 3; ++c) x[c] += w[i] * Q(M.points[s.vertices[i]][c]);
     if (name_old_feature(f, desc, M, region, x)) return f;
     f.dimension = 2; // (never: a face of the region)
-    f.face = desc.regions[region].front().f;
+    f.face = desc.regions[region].faces.front();
   } else {
     f.dimension = o.dimension;
     if (f.dimension == 0) f.vertex = desc.vertices[o.index];
