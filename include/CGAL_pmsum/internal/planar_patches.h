@@ -16,7 +16,9 @@
 // Delaunay, in the coordinate plane its normal is most aligned with) on its border edges,
 // and the new triangles are kept only if they tile exactly the region the old ones tiled:
 // the same border, no added vertex, the count Euler asks for, the same area (all decided
-// exactly). Any doubt keeps the patch as it was (and the border vertices it shares).
+// exactly), and, for a patch that only loses crease vertices, only if they do not ask for
+// more lattice points than the old ones (long thin triangles can: Merger::lattice_weight()).
+// Any doubt keeps the patch as it was (and the border vertices it shares).
 
 #ifndef CGAL_PMSUM_INTERNAL_PLANAR_PATCHES_H
 #define CGAL_PMSUM_INTERNAL_PLANAR_PATCHES_H
@@ -194,7 +196,8 @@ struct Merger
 
   /// The triangles that tile a patch (triangles `old`) without its `inner` removable inner
   /// vertices and its border vertices marked in `gone` (each between two collinear border
-  /// edges), outward; nothing if they cannot be shown to tile the same region.
+  /// edges), outward; nothing if they cannot be shown to tile the same region, or if they
+  /// only drop border vertices and ask for more lattice points (lattice_weight()).
   std::optional<std::vector<std::array<Id, 3>>> retriangulate(const std::vector<Id>& old, std::size_t inner,
                                                               const std::vector<char>& gone) const
   {
@@ -291,7 +294,29 @@ struct Merger
     for (Id t : old) old_triangles.push_back(T[t]);
     if (filtered_sign([&](auto nt) { return area2(nt, old_triangles) - area2(nt, fresh); }) != CGAL::ZERO)
       return std::nullopt;
+    // A patch that only loses crease vertices (no inner one: not cut into many triangles) is
+    // kept if its new triangles ask for more lattice points (equal weights rounded apart: merged).
+    if (inner == 0 && lattice_weight(fresh) > lattice_weight(old_triangles) * (1 + 1e-9)) return std::nullopt;
     return fresh;
+  }
+
+  /// About how many lattice points the triangles get at a small sampling radius r, times
+  /// 8 r^2: the sum of their longest edges squared (a triangle's lattice divides its edges
+  /// into about (longest edge / 2r) parts, sampling.h). The long thin triangles that replace
+  /// the fans of removed crease vertices can ask for more than those fans. (Not asked of a
+  /// patch cut into many triangles: there the far fewer pairs of triangles pay for more points.)
+  double lattice_weight(const std::vector<std::array<Id, 3>>& tris) const
+  {
+    double sum = 0;
+    for (const auto& t : tris) {
+      double longest = 0;
+      for (int i = 0; i < 3; ++i) {
+        const Vec3<double> e = to_nt<double>(P[t[(i + 1) % 3]]) - to_nt<double>(P[t[i]]);
+        longest = (std::max)(longest, dot(e, e));
+      }
+      sum += longest;
+    }
+    return sum;
   }
 };
 
