@@ -196,6 +196,20 @@ if "$pmsum" pd --help | grep -q -- "--levels\|--negate-p\|--threads"; then ko "p
 if "$pmsum" sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --quiet --json "$work/on.json" && grep -q '"islands": true' "$work/on.json" &&
    "$pmsum" sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --quiet --no-islands --json "$work/off.json" &&
    grep -q '"islands": false' "$work/off.json"; then ok; else ko "--no-islands"; fi
+# flat faces cut into triangles are triangulated again by default (--no-merge-flat-regions: the
+# mesh as it is): a unit cube whose faces are cut into 4 triangles each has fewer samples merged
+( printf 'OFF\n14 24 0\n'
+  printf '%s\n' "0 0 0" "1 0 0" "0 1 0" "1 1 0" "0 0 1" "1 0 1" "0 1 1" "1 1 1" \
+    ".5 .5 0" ".5 .5 1" ".5 0 .5" ".5 1 .5" "0 .5 .5" "1 .5 .5"
+  for f in "0 2 3 1 8" "4 5 7 6 9" "0 1 5 4 10" "2 6 7 3 11" "0 4 6 2 12" "1 3 7 5 13"; do
+    set -- $f; printf '3 %s %s %s\n3 %s %s %s\n3 %s %s %s\n3 %s %s %s\n' $1 $2 $5 $2 $3 $5 $3 $4 $5 $4 $1 $5
+  done ) > "$work/cut_cube.off"
+p_samples() { grep -o '"samples": [0-9]*' "$1" | head -1 | grep -o '[0-9]*$'; }
+if "$pmsum" sum "$work/cut_cube.off" "$tet" -d 0.2 -o "$work/out.ply" --quiet --json "$work/merged.json" &&
+   grep -q '"merge_flat_regions": true' "$work/merged.json" &&
+   "$pmsum" sum "$work/cut_cube.off" "$tet" -d 0.2 -o "$work/out.ply" --quiet --no-merge-flat-regions --json "$work/as_is.json" &&
+   grep -q '"merge_flat_regions": false' "$work/as_is.json" &&
+   [ "$(p_samples "$work/merged.json")" -lt "$(p_samples "$work/as_is.json")" ]; then ok; else ko "--no-merge-flat-regions"; fi
 expect_fail 3 "candidate points" -- sum "$data/knot1.off" "$data/elephant.off" -d 0.00002 --relative -o "$work/out.ply"
 # a covering distance too small for the sample lattice is a refusal for size (exit 3), --force or not
 expect_fail 3 "refused: d is too small" -- sum "$cube" "$tet" -d 1e-9 -o "$work/out.ply" --force

@@ -133,7 +133,7 @@ public:
     in::Prepared_sum<PolygonMeshP, PolygonMeshQ, NamedParametersP, NamedParametersQ> sum(
       P, Q, d, np_p, np_q, local_stats, in::Negation::always);
     in::Mesh_descriptors<PolygonMeshP> desc_p;
-    Translational_motion_planner pl(d, k, in::read_mesh(P, np_p, false, sum.check_overlaps, "P", desc_p),
+    Translational_motion_planner pl(d, k, in::read_mesh(P, np_p, false, sum.check_overlaps, "P", desc_p, sum.merge_flat_regions),
                                     std::move(sum.mp), std::move(sum.mq));
     std::vector<std::pair<Point, Point>> contacts; // point, outward direction
     // The default net, plus every vertex + vertex contact: the corners of a passage, where a

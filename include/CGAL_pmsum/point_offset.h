@@ -180,9 +180,10 @@ OutputIterator point_erosion(const PolygonMesh& P, const StructuringMesh& B, dou
     in::make_mesh_data(P, vpm, false, false, "P", desc, settings.check_overlaps);
   }
   in::Mesh_descriptors<PolygonMesh> desc_p;
-  const in::Mesh_data surface = in::make_mesh_data(P, vpm, false, true, "P", desc_p, settings.check_overlaps);
+  const in::Mesh_data surface =
+    in::make_mesh_data(P, vpm, false, true, "P", desc_p, settings.check_overlaps, settings.merge_flat_regions);
   in::Mesh_descriptors<StructuringMesh> desc_b;
-  const in::Mesh_data minus_b = in::read_mesh(B, np_b, true, settings.check_overlaps, "B", desc_b);
+  const in::Mesh_data minus_b = in::read_mesh(B, np_b, true, settings.check_overlaps, "B", desc_b, settings.merge_flat_regions);
   // Every boundary candidate: the net is taken after the part inside P is chosen (a net of
   // the whole boundary could cover a point inside P by one outside).
   const bool net = settings.options.use_covering_net;

@@ -48,7 +48,7 @@ OutputIterator point_sweep(const PolygonMesh& P, const PointRange& path, double 
   Pmsum::Statistics local_stats;
   const in::Sum_settings settings(d, np, local_stats);
   in::Mesh_descriptors<PolygonMesh> desc;
-  const in::Mesh_data mp = in::read_mesh(P, np, false, settings.check_overlaps, "P", desc);
+  const in::Mesh_data mp = in::read_mesh(P, np, false, settings.check_overlaps, "P", desc, settings.merge_flat_regions);
   const in::Mesh_data mq = in::make_polyline_data(path, "path");
   in::run_pipeline<ConcurrencyTag>(mp, mq, d, settings.options, settings.stats, in::make_point_emit<GT>(mp, mq, out),
                                    settings.start);

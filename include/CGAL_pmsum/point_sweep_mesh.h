@@ -48,7 +48,7 @@ void point_sweep_mesh(const PolygonMesh& P, const PointRange& path, double d, Tr
   Pmsum::Statistics local_stats;
   const in::Sum_settings settings(d, np, local_stats);
   in::Mesh_descriptors<PolygonMesh> desc;
-  const in::Mesh_data mp = in::read_mesh(P, np, false, settings.check_overlaps, "P", desc);
+  const in::Mesh_data mp = in::read_mesh(P, np, false, settings.check_overlaps, "P", desc, settings.merge_flat_regions);
   const in::Mesh_data mq = in::make_polyline_data(path, "path");
   in::Pipeline<ConcurrencyTag> pipeline(mp, mq, settings.options, /*coarse_to_fine=*/true);
   ms.seconds_sum += in::seconds_since(t_input);

@@ -496,7 +496,8 @@ void add_feature(Feature_columns& c, const Feature& f, const Provenance& rows)
   for (int i = 0; i < 3; ++i) {
     const double w = f.rational_weights ? CGAL::to_double((*f.rational_weights)[i]) : double(f.weights[i]) / double(f.denominator);
     // (the weights are those of the sample the point was found from: over a face's vertices
-    // for an edge or a vertex sample too, or the exact weights of a trim point)
+    // for an edge or a vertex sample too; or the exact weights of a trim point, or of a point
+    // of a flat region triangulated again, over the mesh's feature that holds it)
     c.vertices.push_back(w != 0 ? row(f.vertices[i].idx(), rows.vertex_row) : -1);
     c.weights.push_back(w);
   }
@@ -571,8 +572,8 @@ void check_threads(int threads)
 
 py::dict minkowski_sum(const py::object& P, const py::object& Q, double d, bool relative, std::optional<double> scale_q,
                        bool negate_p, bool normal_filter, bool cd_filter, bool octree_filter, bool all_candidates,
-                       bool trim_points, bool islands, std::optional<std::vector<double>> levels, int threads, bool force,
-                       bool quiet, const py::object& progress)
+                       bool trim_points, bool islands, bool merge_flat_regions, std::optional<std::vector<double>> levels,
+                       int threads, bool force, bool quiet, const py::object& progress)
 {
   // The checks of read_sum_input, before any reading.
   check_positive(d, "d");
@@ -623,6 +624,7 @@ py::dict minkowski_sum(const py::object& P, const py::object& Q, double d, bool 
     in.covering_net = !all_candidates;
     in.trim_points = trim_points;
     in.islands = islands;
+    in.merge_flat = merge_flat_regions;
     in.force = force;
     in.quiet = true; // no progress bar
     in.threads = threads;
@@ -985,7 +987,7 @@ PYBIND11_MODULE(pmsum, m)
         py::arg("relative") = false, py::arg("scale_q") = py::none(), py::arg("negate_p") = false,
         py::arg("normal_filter") = true, py::arg("cd_filter") = true, py::arg("octree_filter") = true,
         py::arg("all_candidates") = false, py::arg("trim_points") = true, py::arg("islands") = true,
-        py::arg("levels") = py::none(), py::arg("threads") = 1, py::arg("force") = false, py::arg("quiet") = false,
+        py::arg("merge_flat_regions") = true, py::arg("levels") = py::none(), py::arg("threads") = 1, py::arg("force") = false, py::arg("quiet") = false,
         py::arg("progress") = py::none(),
         (std::string(
            "Points exactly on the boundary of P + Q (or -P + Q with negate_p), covering it within d:\n"
@@ -1000,6 +1002,8 @@ PYBIND11_MODULE(pmsum, m)
          "  all_candidates   every boundary candidate instead of the (d/2, d)-net (--all-candidates)\n"
          "  trim_points      exact points on the trim curves (--no-trim-points)\n"
          "  islands          search pieces inside one lattice cell (--no-islands)\n"
+         "  merge_flat_regions  triangulate flat regions cut into many triangles again first\n"
+         "                   (--no-merge-flat-regions)\n"
          "  levels           coarse to fine: larger covering distances first (--levels), same unit as d\n"
          "  threads          worker threads; 0 = all cores (the tool's default), 1 = sequential.\n"
          "                   The output does not depend on it.\n"

@@ -246,6 +246,7 @@ TOOL_CASES = [
     ("tetrahedron", "icosahedron", 0.15, {"trim_points": False}),
     ("l_and_box_sharing_edge", "octahedron", 0.05, {"relative": True, "islands": False, "octree_filter": False}),
     ("open_cube", "icosahedron", 5.0, {"threads": 0}),
+    ("cross", "star", 0.05, {"relative": True, "merge_flat_regions": False}),
 ]
 
 
@@ -255,8 +256,8 @@ def cli_options(options):
         flag = {"relative": "--relative", "negate_p": "--negate-p", "all_candidates": "--all-candidates"}.get(key)
         if flag:
             args += [flag] if value else []
-        elif key in ("trim_points", "islands", "octree_filter", "normal_filter", "cd_filter"):
-            args += [] if value else ["--no-" + {"trim_points": "trim-points"}.get(key, key.replace("_filter", "-filter"))]
+        elif key in ("trim_points", "islands", "octree_filter", "normal_filter", "cd_filter", "merge_flat_regions"):
+            args += [] if value else ["--no-" + key.replace("_", "-")]
         elif key == "scale_q":
             args += ["--scale-q", repr(value)]
         elif key == "threads":
