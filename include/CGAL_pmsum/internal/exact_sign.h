@@ -59,6 +59,16 @@ template <class NT>
 inline Vec3<NT> to_nt(const std::array<double, 3>& p)
 { return {NT(p[0]), NT(p[1]), NT(p[2])}; }
 
+/// (b - a) x (c - a) in NT: the normal of triangle abc (not normalized), on the side from
+/// which a, b, c turn counterclockwise.
+template <class NT>
+inline Vec3<NT> triangle_normal(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                const std::array<double, 3>& c)
+{
+  const Vec3<NT> A = to_nt<NT>(a);
+  return cross(to_nt<NT>(b) - A, to_nt<NT>(c) - A);
+}
+
 /// Converts an integer exactly. Callers keep |i| < 2^53 (lattice denominators are capped at
 /// 2^20, so products of two of them are far below), hence the conversion to double is exact.
 template <class NT>

@@ -89,10 +89,7 @@ struct Mesh_data
 
   /// Outward normal (b - a) x (c - a) of triangle t, not normalized.
   template <class NT> Vec3<NT> triangle_normal(Index t) const
-  {
-    const Vec3<NT> a = point<NT>(triangles[t][0]);
-    return cross(point<NT>(triangles[t][1]) - a, point<NT>(triangles[t][2]) - a);
-  }
+  { return internal::triangle_normal<NT>(points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]]); }
   /// Vertex of triangle t that is not on edge e.
   Index opposite_vertex(Index t, Index e) const
   {
@@ -188,7 +185,7 @@ inline CGAL::Sign side_of_plane(const std::array<double, 3>& a, const std::array
     const Vec3<NT> A = to_nt<NT>(a);
     Vec3<NT> z = to_nt<NT>(zk[0]);
     for (int i = 1; i < k; ++i) z = z + to_nt<NT>(zk[i]);
-    return dot(cross(to_nt<NT>(b) - A, to_nt<NT>(c) - A), z - scaled(A, int_nt<NT>(k)));
+    return dot(triangle_normal<NT>(a, b, c), z - scaled(A, int_nt<NT>(k)));
   });
 }
 
@@ -294,8 +291,7 @@ public:
       // i.e. no edge line of either triangle leaves the other on its outer closed side
       const CGAL::Sign same = filtered_sign([&](auto nt) {
         using NT = decltype(nt);
-        const Vec3<NT> a = to_nt<NT>(T1[0]), b = to_nt<NT>(T2[0]);
-        return dot(cross(to_nt<NT>(T1[1]) - a, to_nt<NT>(T1[2]) - a), cross(to_nt<NT>(T2[1]) - b, to_nt<NT>(T2[2]) - b));
+        return dot(triangle_normal<NT>(T1[0], T1[1], T1[2]), triangle_normal<NT>(T2[0], T2[1], T2[2]));
       });
       if (same != CGAL::POSITIVE) return false;
       for (const auto* pair : {&T1, &T2}) {
@@ -345,10 +341,7 @@ private:
   {
     return filtered_sign([&](auto nt) {
       using NT = decltype(nt);
-      const Vec3<NT> A = to_nt<NT>(tri[0]);
-      const Vec3<NT> n = cross(to_nt<NT>(tri[1]) - A, to_nt<NT>(tri[2]) - A);
-      const Vec3<NT> pa = to_nt<NT>(a);
-      return dot(n, cross(to_nt<NT>(b) - pa, to_nt<NT>(x) - pa));
+      return dot(triangle_normal<NT>(tri[0], tri[1], tri[2]), triangle_normal<NT>(a, b, x));
     });
   }
 
@@ -409,8 +402,7 @@ private:
         for (int i = 0; i < 3 && !out; ++i) {
           const CGAL::Sign si = filtered_sign([&](auto nt) {
             using NT = decltype(nt);
-            const Vec3<NT> A = to_nt<NT>(pt(tri[0]));
-            const Vec3<NT> n = cross(to_nt<NT>(pt(tri[1])) - A, to_nt<NT>(pt(tri[2])) - A);
+            const Vec3<NT> n = triangle_normal<NT>(pt(tri[0]), pt(tri[1]), pt(tri[2]));
             const Vec3<NT> pa = scaled(to_nt<NT>(pt(tri[i])), int_nt<NT>(k)), pb = scaled(to_nt<NT>(pt(tri[(i + 1) % 3])), int_nt<NT>(k));
             Vec3<NT> z = to_nt<NT>(zk[0]);
             for (int j = 1; j < k; ++j) z = z + to_nt<NT>(zk[j]);
@@ -435,8 +427,7 @@ private:
           const P3 &A = pt(tri[0]), &B = pt(tri[1]), &C = pt(tri[2]);
           const CGAL::Sign toward = filtered_sign([&](auto nt) {
             using NT = decltype(nt);
-            const Vec3<NT> a = to_nt<NT>(A);
-            return dot(to_nt<NT>(w), cross(to_nt<NT>(B) - a, to_nt<NT>(C) - a));
+            return dot(to_nt<NT>(w), triangle_normal<NT>(A, B, C));
           });
           const CGAL::Sign side = side_of_plane(A, B, C, zk, k);
           if (toward == CGAL::ZERO) continue; // parallel to the plane, z off it: never meets

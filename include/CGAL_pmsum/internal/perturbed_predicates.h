@@ -95,10 +95,7 @@ struct Tree_mesh
     }
     {
       CGAL::Protect_FPU_rounding<true> guard;
-      for (const auto& tri : m.triangles) {
-        const Vec3<Interval> a = to_nt<Interval>(base[tri[0]]);
-        normals.push_back(cross(to_nt<Interval>(base[tri[1]]) - a, to_nt<Interval>(base[tri[2]]) - a));
-      }
+      for (const auto& tri : m.triangles) normals.push_back(triangle_normal<Interval>(base[tri[0]], base[tri[1]], base[tri[2]]));
     }
     std::vector<CGAL::Bbox_3> boxes;
     for (const auto& t : triangles) boxes.push_back(t.second.bbox());
@@ -302,8 +299,7 @@ private:
     const std::array<double, 3>& w = solid.ray;
     const CGAL::Sign toward = filtered_sign([&](auto nt) {
       using NT = decltype(nt);
-      const Vec3<NT> a = to_nt<NT>(solid.base[tri[0]]);
-      return dot(to_nt<NT>(w), cross(to_nt<NT>(solid.base[tri[1]]) - a, to_nt<NT>(solid.base[tri[2]]) - a));
+      return dot(to_nt<NT>(w), triangle_normal<NT>(solid.base[tri[0]], solid.base[tri[1]], solid.base[tri[2]]));
     });
     if (toward == CGAL::ZERO) return false; // ray parallel to the plane, z (perturbed) not on it
     if (orientation(T[0], T[1], T[2], z) != -toward) return false; // z must be behind the plane

@@ -71,15 +71,10 @@ namespace planar_patches {
 inline std::optional<std::pair<int, CGAL::Sign>> projection_axis(const std::array<double, 3>& a, const std::array<double, 3>& b,
                                           const std::array<double, 3>& c)
 {
-  auto normal = [&](auto nt) {
-    using NT = decltype(nt);
-    const Vec3<NT> A = to_nt<NT>(a);
-    return cross(to_nt<NT>(b) - A, to_nt<NT>(c) - A);
-  };
-  const Vec3<double> n = normal(0.);
+  const Vec3<double> n = triangle_normal<double>(a, b, c);
   int k = 0;
   for (int i = 1; i < 3; ++i) if (std::abs(n[i]) > std::abs(n[k])) k = i;
-  const CGAL::Sign sign = filtered_sign([&](auto nt) { return normal(nt)[k]; });
+  const CGAL::Sign sign = filtered_sign([&](auto nt) { return triangle_normal<decltype(nt)>(a, b, c)[k]; });
   if (sign == CGAL::ZERO) return std::nullopt;
   return std::make_pair(k, sign);
 }
@@ -122,10 +117,7 @@ struct Merger
   }
 
   template <class NT> Vec3<NT> normal(Id t) const
-  {
-    const Vec3<NT> a = to_nt<NT>(P[T[t][0]]);
-    return cross(to_nt<NT>(P[T[t][1]]) - a, to_nt<NT>(P[T[t][2]]) - a);
-  }
+  { return triangle_normal<NT>(P[T[t][0]], P[T[t][1]], P[T[t][2]]); }
   Id head(Id h) const { return T[h / 3][(h % 3 + 1) % 3]; }
   Id tail(Id h) const { return T[h / 3][h % 3]; }
   bool patch_border(Id h) const { return twin[h] == none || patch[twin[h] / 3] != patch[h / 3]; }

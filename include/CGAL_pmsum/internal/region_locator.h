@@ -101,14 +101,26 @@ private:
   /// its box (grown by a relative margin that covers the rounding of a point) meets.
   void build_grid(const std::vector<std::array<double, 3>>& points)
   {
-    auto projected = [&](std::uint32_t v) { return std::array<double, 2>{points[v][m_u], points[v][m_v]}; };
-    std::array<double, 2> lo = projected(m_triangles.front()[0]), hi = lo;
-    for (const Triangle& t : m_triangles)
-      for (std::uint32_t v : t)
-        for (int c = 0; c < 2; ++c) {
-          lo[c] = (std::min)(lo[c], projected(v)[c]);
-          hi[c] = (std::max)(hi[c], projected(v)[c]);
-        }
+    using Box = std::array<std::array<double, 2>, 2>; // lower and upper corners
+    auto box_of = [&](const Triangle& t) {
+      Box b;
+      for (int c = 0; c < 2; ++c) {
+        const int axis = c == 0 ? m_u : m_v;
+        b[0][c] = (std::min)({points[t[0]][axis], points[t[1]][axis], points[t[2]][axis]});
+        b[1][c] = (std::max)({points[t[0]][axis], points[t[1]][axis], points[t[2]][axis]});
+      }
+      return b;
+    };
+    std::vector<Box> boxes;
+    boxes.reserve(m_triangles.size());
+    for (const Triangle& t : m_triangles) boxes.push_back(box_of(t));
+    Box region = boxes.front();
+    for (const Box& b : boxes)
+      for (int c = 0; c < 2; ++c) {
+        region[0][c] = (std::min)(region[0][c], b[0][c]);
+        region[1][c] = (std::max)(region[1][c], b[1][c]);
+      }
+    const auto& [lo, hi] = region;
     const int n = (std::max)(1, (std::min)(1024, int(std::ceil(std::sqrt(double(m_triangles.size()))))));
     m_ni = m_nj = n;
     m_lo = lo;
@@ -116,12 +128,7 @@ private:
     const double margin = 1e-9 * (std::max)({std::abs(lo[0]), std::abs(lo[1]), std::abs(hi[0]), std::abs(hi[1]), 1e-300});
     std::vector<std::pair<std::uint32_t, std::uint32_t>> entries; // (cell, triangle)
     for (std::uint32_t t = 0; t < m_triangles.size(); ++t) {
-      std::array<double, 2> a = projected(m_triangles[t][0]), b = a;
-      for (std::uint32_t v : m_triangles[t])
-        for (int c = 0; c < 2; ++c) {
-          a[c] = (std::min)(a[c], projected(v)[c]);
-          b[c] = (std::max)(b[c], projected(v)[c]);
-        }
+      const auto& [a, b] = boxes[t];
       const auto first = cell(a[0] - margin, a[1] - margin), last = cell(b[0] + margin, b[1] + margin);
       for (int i = first.first; i <= last.first; ++i)
         for (int j = first.second; j <= last.second; ++j) entries.push_back({std::uint32_t(i * m_nj + j), t});
