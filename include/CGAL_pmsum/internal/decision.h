@@ -279,13 +279,14 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
   Island_search islands(filter, search);
   const std::size_t before = out.trims.size(), queries_before = filter.statistics().queries;
   // Certified inside the sum: a box, by the octree's leaves; else a ball, by the certificate.
+  Interior_certificate::Hint hint;
   auto certified = [&](const Point3& lo, const Point3& hi, bool ball) {
     if (!c.octree) return false;
     if (c.octree->certifies_box(lo, hi)) return true;
     if (!ball) return false;
     Point3 centre;
     for (int i = 0; i < 3; ++i) centre[i] = 0.5 * (lo[i] + hi[i]);
-    return c.octree->certifies_ball(centre, 0.5 * std::sqrt(dot(hi - lo, hi - lo)));
+    return c.octree->certifies_ball(centre, 0.5 * std::sqrt(dot(hi - lo, hi - lo)), &hint);
   };
   find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, c.strips, corner, certified, search, c.islands ? &islands : nullptr, out.trims);
   counters.island_cells += islands.searched_cells();

@@ -319,10 +319,19 @@ public:
     m_q.emplace(Q, gq.first, gq.second, resolution, tolerance, max_balls, parallel, comm);
   }
 
-  /// Is every point within distance rho of c inside int(P + Q)?
-  bool certifies(const Point3& c, double rho) const
+  /// The balls that last certified a query, on each side, tried first by the next query
+  /// given the same hint (neighbouring queries are often certified by the same ball). The
+  /// answer does not depend on it.
+  struct Hint
   {
-    return certifies(c, rho, m_p->balls(), *m_q) || certifies(c, rho, m_q->balls(), *m_p);
+    std::array<std::uint32_t, 2> last = {0, 0};
+  };
+
+  /// Is every point within distance rho of c inside int(P + Q)?
+  bool certifies(const Point3& c, double rho, Hint* hint = nullptr) const
+  {
+    return certifies(c, rho, m_p->balls(), *m_q, hint ? &hint->last[0] : nullptr) ||
+           certifies(c, rho, m_q->balls(), *m_p, hint ? &hint->last[1] : nullptr);
   }
 
   bool can_certify() const { return !m_p->balls().empty() || !m_q->balls().empty(); }
@@ -337,11 +346,20 @@ public:
   }
 
 private:
-  static bool certifies(const Point3& c, double rho, const std::vector<Inner_ball>& balls, const Distance_grid& other)
+  /// Does a ball of `balls` certify the query, `last` (if given, the index of the ball tried
+  /// first) updated to it?
+  static bool certifies(const Point3& c, double rho, const std::vector<Inner_ball>& balls, const Distance_grid& other,
+                        std::uint32_t* last)
   {
-    for (const Inner_ball& b : balls) { // by decreasing radius
-      if (b.r <= rho) return false;
-      if (other.closer_than({c[0] - b.c[0], c[1] - b.c[1], c[2] - b.c[2]}, b.r - rho)) return true;
+    auto holds = [&](const Inner_ball& b) {
+      return other.closer_than({c[0] - b.c[0], c[1] - b.c[1], c[2] - b.c[2]}, b.r - rho);
+    };
+    if (last && *last < balls.size() && balls[*last].r > rho && holds(balls[*last])) return true;
+    for (std::size_t i = 0; i < balls.size(); ++i) { // by decreasing radius
+      if (balls[i].r <= rho) return false;
+      if (!holds(balls[i])) continue;
+      if (last) *last = std::uint32_t(i);
+      return true;
     }
     return false;
   }
@@ -408,10 +426,11 @@ public:
       const double rho = 0.5 * std::sqrt(3.0) * (size + 2 * m_tol) * (1 + 1e-9) + m_tol;
       const std::vector<std::uint8_t> ok = map_ranges<std::uint8_t>(unique.size(), parallel, comm,
         [&](std::size_t first, std::size_t last, std::vector<std::uint8_t>& out) {
+          Interior_certificate::Hint hint;
           for (std::size_t i = first; i < last; ++i) {
             Point3 c;
             for (int a = 0; a < 3; ++a) c[a] = m_origin[a] + size * (double(coordinate(unique[i], a)) + 0.5);
-            out.push_back(m_cert->certifies(c, rho));
+            out.push_back(m_cert->certifies(c, rho, &hint));
           }
         });
       std::vector<Key> next;
@@ -447,8 +466,8 @@ public:
 
   /// Is the ball of centre c and radius rho (doubles, within the rounding margin) inside the
   /// sum? The certificate's own test, where no leaf is needed.
-  bool certifies_ball(const Point3& c, double rho) const
-  { return m_enabled && m_cert->certifies(c, rho * (1 + 1e-9) + 2 * m_tol); }
+  bool certifies_ball(const Point3& c, double rho, Interior_certificate::Hint* hint = nullptr) const
+  { return m_enabled && m_cert->certifies(c, rho * (1 + 1e-9) + 2 * m_tol, hint); }
 
   /// The leaf of x if it is certified (a convex cell inside the sum).
   std::optional<Key> certified_leaf(const Point3& x) const

@@ -385,8 +385,11 @@ public:
       Segment_info& info = m_segments[ab];
       const auto [a, b] = ab;
       const Corner_info &ca = m_corner(a), &cb = m_corner(b);
-      if (ca.leaf && cb.leaf && *ca.leaf == *cb.leaf) continue;
-      if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, false)) continue;
+      // Both ends inside: skipped if certified, also by the certificate's balls where both
+      // ends are in certified leaves (else the balls mostly fail, at up to 512 lookups).
+      const bool in_leaves = ca.leaf && cb.leaf;
+      if (in_leaves && *ca.leaf == *cb.leaf) continue;
+      if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, in_leaves)) continue;
       ends.clear();
       m_search.free_ends(Translation_segment(point(a), point(b)), m_directions, m_fp.number_of_directions, ends,
                          {ca.witness, cb.witness});
@@ -584,7 +587,8 @@ private:
 /// (`strips`: see Strips). A segment or a cell is
 /// skipped without a search when `certified(lo, hi, ball)` tells that its bounding box is
 /// inside the sum (by octree leaves; `ball`: also by the certificate's balls, costlier, for
-/// cells), or a segment's ends lie in one certified octree leaf.
+/// cells and for segments between two certified leaves), or a segment's ends lie in one
+/// certified octree leaf.
 template <class CornerInfo, class Certified>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
