@@ -522,7 +522,8 @@ inline void check_total_orientation(const Mesh_data& m, const std::string& name)
 /// Replaces the triangles of `m` by those of `merged` (same vertices, same solid): the edges
 /// are rebuilt from them (the mesh's edges that are left keep their halfedges, in their order;
 /// a new edge and a new triangle get their region, whose old triangles `desc` keeps), and each
-/// triangle gets the face of its region that `merged.source` names. Leaves `m` and `desc` as
+/// triangle gets the face that `merged.source` names (a new triangle's only stands for its
+/// region: its records are located among the region's own, Mesh_descriptors::regions). Leaves `m` and `desc` as
 /// they are, and returns false, if a new edge joins two vertices that an edge of the mesh
 /// elsewhere joins too.
 template <class PolygonMesh>
@@ -601,7 +602,9 @@ bool adopt_merged_triangles(Mesh_data& m, Mesh_descriptors<PolygonMesh>& desc, c
 /// `as_surface`, closed components count as surfaces too (no volume). With `check_solids`,
 /// closed components must not cross themselves or each other, and each must be oriented
 /// as its nesting asks (see Solid_checker); without, only the total volume's sign is checked.
-/// With `merge_flat`, flat regions cut into many triangles are triangulated again first.
+/// With `merge_flat`, flat regions cut into many triangles are triangulated again first (off
+/// here, the mesh as given, for the internal uses and tests; the public functions pass their
+/// `merge_flat_regions`, on by default, through read_mesh()).
 template <class PolygonMesh, class VertexPointMap>
 Mesh_data make_mesh_data(const PolygonMesh& pm, VertexPointMap vpm, bool negate, bool as_surface,
                          const std::string& name, Mesh_descriptors<PolygonMesh>& desc, bool check_solids = true,

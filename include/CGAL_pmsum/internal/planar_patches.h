@@ -50,7 +50,7 @@ namespace internal {
 struct Planar_merge
 {
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<std::uint32_t> source;  // for each new triangle, an old triangle of its region
+  std::vector<std::uint32_t> source;  // for each triangle, the old one it is (kept), or its region's first
   /// The old triangles of each region triangulated again, and for each new triangle the
   /// index of its region there, or `kept` (an old triangle kept as it was).
   std::vector<std::vector<std::uint32_t>> regions;

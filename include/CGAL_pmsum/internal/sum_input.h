@@ -64,10 +64,11 @@ auto vertex_point_map_of(const PolygonMesh& pm, const NP& np)
 }
 
 /// Copies and checks the mesh `pm` with its pack's `vertex_point_map` and `treat_as_surface`
-/// (with `merge_flat`, its flat regions triangulated again: planar_patches.h).
+/// (with `merge_flat`, the user's `merge_flat_regions`: its flat regions triangulated again,
+/// planar_patches.h).
 template <class PolygonMesh, class NP>
 Mesh_data read_mesh(const PolygonMesh& pm, const NP& np, bool negate, bool check_overlaps, const std::string& name,
-                    Mesh_descriptors<PolygonMesh>& desc, bool merge_flat = false)
+                    Mesh_descriptors<PolygonMesh>& desc, bool merge_flat)
 {
   const bool as_surface =
     parameters::choose_parameter(parameters::get_parameter(np, internal_np::treat_as_surface), false);
