@@ -514,6 +514,134 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
   CHECK(ends_found > 50);
 }
 
+TEST_CASE("orientations zero by construction: the CD filter answers as if told nothing", "[filters][exact]")
+{
+  // Where a query's translation x is p + q with p and q in the affine hulls of known vertices
+  // of P and Q (a candidate, a lattice point of a convolution facet), or a predicate's root
+  // on a segment, the CD filter takes the orientations that this makes zero for zero without
+  // evaluating them (Cd_filter::zero_by_construction()). Check that each is zero, exactly,
+  // and every answer against a filter told nothing, at the contacts of vertex-triangle and
+  // edge-edge pairs, at roots, and along segments of a convolution facet's plane.
+  using namespace CGAL::Pmsum::internal;
+  const std::vector<std::pair<Soup, Soup>> cases = {
+    {random_convex(30, 3), random_convex(25, 4)},        // arbitrary doubles: Mpzf evaluations
+    {l_shape(), transformed(tetrahedron(0.6), 0.7)},     // and a small grid: double evaluations
+    {tunnel_block(), turned_cube(0.5, 0.8, 0.6)}};
+  CGAL::Random rng(17);
+  std::size_t contacts = 0, zeros_told = 0, perturbed = 0, roots = 0, segments = 0, ends_found = 0;
+  std::size_t untold_zeros = 0, nonzero_told = 0, different = 0; // must stay 0
+  for (const auto& [ps, qs] : cases) {
+    const auto operands = cd_operands(ps, qs);
+    const Mesh_data &P = operands.first, &Q = operands.second;
+    const Cd_geometry geometry(P, Q);
+    Cd_filter told(&geometry), untold(&geometry);
+    auto vertex = [&](const Mesh_data& M) {
+      const Index v = Index(rng.get_int(0, int(M.points.size())));
+      return Sample{{0, v}, {v, v, v}, {1, 0, 0}, 1};
+    };
+    auto on_edge = [&](const Mesh_data& M) {
+      const Index e = Index(rng.get_int(0, int(M.edges.size())));
+      const std::int32_t a = rng.get_int(1, 5);
+      return Sample{{1, e}, {M.edges[e].v[0], M.edges[e].v[1], M.edges[e].v[1]}, {a, 5 - a, 0}, 5};
+    };
+    auto in_triangle = [&](const Mesh_data& M, Index t) {
+      const std::int32_t a = rng.get_int(1, 5), b = rng.get_int(1, 7 - a);
+      return Sample{{2, t}, M.triangles[t], {a, b, 7 - a - b}, 7};
+    };
+    auto triangle = [&](const Mesh_data& M) { return Index(rng.get_int(0, int(M.number_of_triangles()))); };
+    // Every overlapping pair at x, told `zeros` or nothing: the same answers. (Without
+    // directions to perturb along, some roots on these segments meet a predicate that is
+    // zero for every translation, parallel edges: both filters must then refuse alike.)
+    auto answer = [](const auto& test) {
+      try {
+        return int(test());
+      } catch (const std::logic_error&) {
+        return -1; // "a perturbed predicate is identically zero"
+      }
+    };
+    auto same_answers = [&](const Exact_point& x, const Known_zeros& zeros) {
+      std::vector<std::pair<Index, Index>> pairs;
+      untold.for_each_overlapping_pair(enclosure(x), [&](Index u, Index v) { pairs.emplace_back(u, v); return false; });
+      told.set_point(x, nullptr, 0, {}, zeros);
+      untold.set_point(x, nullptr, 0);
+      for (const auto& [u, v] : pairs) {
+        untold.for_each_predicate(u, v, [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                                            const Moving_point& d) {
+          untold_zeros += untold.zero_by_construction({&a, &b, &c, &d});
+          if (!told.zero_by_construction({&a, &b, &c, &d})) return;
+          const Affine_predicate f = untold.affine_form(a, b, c, d);
+          nonzero_told += !CGAL::is_zero(x.W * f.d0 + dot(f.g, x.X));
+          ++zeros_told;
+        });
+        const int crosses = answer([&] { return told.pair_crosses_here(u, v); });
+        perturbed += crosses >= 0 && told.here_perturbed();
+        different += crosses != answer([&] { return untold.pair_crosses_here(u, v); });
+      }
+      different += answer([&] { return told.is_free_here(); }) != answer([&] { return untold.is_free_here(); });
+    };
+    for (int k = 0; k < 60; ++k) {
+      // A contact: a vertex of one and a point of a triangle of the other, or two edges.
+      std::pair<Sample, Sample> pq;
+      if (k % 3 == 0) pq = {in_triangle(P, triangle(P)), vertex(Q)};
+      else if (k % 3 == 1) pq = {vertex(P), in_triangle(Q, triangle(Q))};
+      else pq = {on_edge(P), on_edge(Q)};
+      const Exact_point x = exact_sum(P, pq.first, Q, pq.second);
+      same_answers(x, {{&pq}});
+      ++contacts;
+      // The roots of the predicates of the pairs along a segment from x to another contact.
+      const std::pair<Sample, Sample> other = {vertex(P), vertex(Q)};
+      const Translation_segment s(x, exact_sum(P, other.first, Q, other.second));
+      std::vector<std::pair<Index, Index>> pairs;
+      untold.for_each_overlapping_pair(hull(enclosure(s.a), enclosure(s.b)), [&](Index u, Index v) {
+        pairs.emplace_back(u, v);
+        return false;
+      });
+      for (std::size_t i = 0; i < pairs.size() && i < 8; ++i)
+        untold.for_each_predicate(pairs[i].first, pairs[i].second, [&](const Moving_point& a, const Moving_point& b,
+                                                                        const Moving_point& c, const Moving_point& d) {
+          const Affine_predicate f = untold.affine_form(a, b, c, d);
+          const Exact_nt da = s.a.W * f.d0 + dot(f.g, s.a.X), db = s.b.W * f.d0 + dot(f.g, s.b.X);
+          if (CGAL::sign(da) == CGAL::sign(db) || CGAL::is_zero(da) || CGAL::is_zero(db)) return;
+          const Predicate_points zero = {a, b, c, d};
+          same_answers(s.at(Segment_parameter{da, da - db}), {{}, &zero});
+          ++roots;
+        });
+    }
+    // Segments between lattice points of a vertex-triangle pair's facet, on its plane (told
+    // the plane and the ends' samples) and off it (told nothing): the same free parts.
+    for (int k = 0; k < 30; ++k) {
+      const Index t = triangle(P);
+      const Sample q = vertex(Q);
+      std::array<std::pair<Sample, Sample>, 3> corners;
+      for (int i = 0; i < 3; ++i) corners[i] = {Sample{{0, P.triangles[t][i]}, {P.triangles[t][i], 0, 0}, {1, 0, 0}, 1}, q};
+      const std::array<std::pair<Sample, Sample>, 2> ends = {{{in_triangle(P, t), q}, {in_triangle(P, t), q}}};
+      const Exact_point a = exact_sum(P, ends[0].first, Q, q), b = exact_sum(P, ends[1].first, Q, q);
+      if (CGAL::is_zero(a.X[0] * b.W - b.X[0] * a.W) && CGAL::is_zero(a.X[1] * b.W - b.X[1] * a.W) &&
+          CGAL::is_zero(a.X[2] * b.W - b.X[2] * a.W))
+        continue;
+      Segment_search on_plane(told), off_plane(untold);
+      on_plane.start_plane(corners, nullptr, 0);
+      std::vector<Segment_parameter> e_on, e_off;
+      on_plane.free_ends(Translation_segment(a, b, ends), nullptr, 0, e_on);
+      off_plane.free_ends(Translation_segment(a, b), nullptr, 0, e_off);
+      REQUIRE(e_on.size() == e_off.size());
+      for (std::size_t i = 0; i < e_on.size(); ++i) different += compare(e_on[i], e_off[i]) != CGAL::ZERO;
+      ++segments;
+      ends_found += e_on.size();
+    }
+  }
+  INFO(contacts << " contacts, " << zeros_told << " zeros by construction, " << perturbed
+                << " pair tests that met a zero, " << roots << " roots, " << segments << " segments, " << ends_found
+                << " free ends");
+  CHECK(untold_zeros == 0);
+  CHECK(nonzero_told == 0); // every zero told is one
+  CHECK(different == 0);
+  CHECK(zeros_told > 1000);
+  CHECK(perturbed > 100); // zeros were met (and decided by the perturbation)
+  CHECK(roots > 100);
+  CHECK(ends_found > 10);
+}
+
 // --- Ranks (named parameter `communicator`): threads stand for the processes. ------------
 #include <CGAL_pmsum/Communicator.h>
 #include <CGAL_pmsum/point_minkowski_sum_coarse_to_fine.h>

@@ -33,6 +33,7 @@
 
 #include <boost/container/static_vector.hpp>
 
+#include <algorithm>
 #include <initializer_list>
 #include <tuple>
 #include <unordered_map>
@@ -71,6 +72,21 @@ inline Exact_point exact_sum(const Mesh_data& P, const Sample& p, const Mesh_dat
   return {part(P, p, q.denominator) + part(Q, q, p.denominator),
           Exact_nt(long(std::int64_t(p.denominator) * q.denominator))};
 }
+
+/// Samples of P and Q whose affine hulls' sum (of a point of each) holds a translation, as
+/// far as known (none: nothing known). See Cd_filter::zero_by_construction().
+using Spans = boost::container::static_vector<const std::pair<Sample, Sample>*, 3>;
+
+/// The points of an orientation predicate.
+using Predicate_points = std::array<Moving_point, 4>;
+
+/// What is known of a translation x that makes orientation predicates zero at x
+/// (Cd_filter::zero_by_construction()).
+struct Known_zeros
+{
+  Spans spans;                                 // of x (none: nothing known)
+  const Predicate_points* predicate = nullptr; // one zero at x (e.g. x is its root on a segment)
+};
 
 /// Is w the zero vector?
 inline bool is_null(const Vec3<Exact_nt>& w) { return CGAL::is_zero(w[0]) && CGAL::is_zero(w[1]) && CGAL::is_zero(w[2]); }
@@ -229,8 +245,8 @@ struct Cd_geometry
   /// with more triangles stays static; the other is reflected and translated.
   Cd_geometry(const Mesh_data& P, const Mesh_data& Q)
     : p(&P), q(&Q),
-      static_mesh(P.number_of_triangles() >= Q.number_of_triangles() ? P : Q, false),
-      moving_mesh(P.number_of_triangles() >= Q.number_of_triangles() ? Q : P, true)
+      p_moves(P.number_of_triangles() < Q.number_of_triangles()), static_mesh(p_moves ? Q : P, false),
+      moving_mesh(p_moves ? P : Q, true)
   {
     // Margin for the conservative double slab tests of ray traversal.
     double scale = 1;
@@ -242,6 +258,7 @@ struct Cd_geometry
 
   const Mesh_data* p;
   const Mesh_data* q;
+  bool p_moves; // (declared before the meshes, which it chooses)
   Tree_mesh static_mesh, moving_mesh;
   double margin;
   bool exact_doubles; // D(0) and g of every predicate are exact in double arithmetic
@@ -254,8 +271,8 @@ class Cd_filter : Perturbed_predicates<Cd_filter, Moving_point>
 
 public:
   explicit Cd_filter(const Cd_geometry* g) // shared, not copied: threads construct their own filter
-    : m_p(g->p), m_q(g->q), m_static(g->static_mesh), m_moving(g->moving_mesh), m_margin(g->margin),
-      m_exact_doubles(g->exact_doubles) {}
+    : m_p(g->p), m_q(g->q), m_p_moves(g->p_moves), m_static(g->static_mesh), m_moving(g->moving_mesh),
+      m_margin(g->margin), m_exact_doubles(g->exact_doubles) {}
 
   const Cd_statistics& statistics() const { return m_stats; }
 
@@ -285,6 +302,8 @@ public:
     m_dirs = nullptr; m_dir_count = 0; m_dir_first = 0;
     m_prefix = {};
     m_query_on_plane = false;
+    m_support = {};
+    m_zero_of = nullptr;
     m_exact_x.reset();
     m_x = to_nt<Interval>(t);
     return configuration_is_free();
@@ -297,7 +316,9 @@ public:
   /// directions (e.g. along a segment of translations: the answer is then the one just past
   /// x on that segment), then along the directions (from directions[0]), then the axes.
   /// The filter keeps pointers to `directions` and to the prefix's vectors.
-  void set_point(const Exact_point& x, const Direction* directions, std::uint32_t count, const Prefix& prefix = {})
+  /// `zeros`: what is known of x, for zero_by_construction().
+  void set_point(const Exact_point& x, const Direction* directions, std::uint32_t count, const Prefix& prefix = {},
+                 const Known_zeros& zeros = {})
   {
     m_sp = m_sq = nullptr;
     m_dirs = directions; m_dir_count = count; m_dir_first = 0;
@@ -305,6 +326,8 @@ public:
     m_x = enclosure(x);
     m_prefix = prefix;
     m_query_on_plane = false;
+    m_support = support(zeros.spans);
+    m_zero_of = zeros.predicate;
     CGAL::Protect_FPU_rounding<true> guard;
     for (std::size_t k = 0; k < prefix.size(); ++k)
       if (prefix[k])
@@ -314,10 +337,14 @@ public:
   /// set_point() for a point x of the plane set by set_plane(), perturbed first along the
   /// prefix's directions (parallel to the plane), then along the plane's directions: the
   /// queries that follow do not test the pairs that cross nowhere on the plane (on_plane()).
-  void set_point_on_plane(const Exact_point& x, const Prefix& prefix)
+  /// `zeros`: what is known of x (its spans: if none, the plane's corners).
+  void set_point_on_plane(const Exact_point& x, const Prefix& prefix, const Known_zeros& zeros = {})
   {
-    set_point(x, m_plane.directions, m_plane.count, prefix);
+    set_point(x, m_plane.directions, m_plane.count, prefix, zeros);
+    CGAL_assertion(CGAL::is_zero(dot(m_plane.exact_normal, scaled(x.X, m_plane.exact_point.W) -
+                                                           scaled(m_plane.exact_point.X, x.W))));
     m_query_on_plane = true;
+    if (zeros.spans.empty()) m_support = m_plane.support;
   }
 
   /// Is the query set by set_point() free?
@@ -326,19 +353,48 @@ public:
   /// Does item u of the moving mesh cross item v of the static mesh for the query set by
   /// set_point()? `here_perturbed()` then tells whether the test looked at the perturbation.
   bool pair_crosses_here(Index u, Index v) { return items_cross(u, v); }
-  /// Does item pair (u, v) cross at every point of `points`, each perturbed as by
-  /// set_point(x, directions, count, prefix)? (Where the pair crosses is convex: then it
-  /// crosses on their convex hull, perturbed alike.)
-  bool pair_crosses_at(Index u, Index v, std::initializer_list<const Exact_point*> points, const Direction* directions,
-                       std::uint32_t count, const Prefix& prefix = {})
+  /// Does item pair (u, v) cross at every point x of `points`, each perturbed as by
+  /// set_point(x, directions, count, prefix, zeros)? (Where the pair crosses is convex: then
+  /// it crosses on their convex hull, perturbed alike.)
+  bool pair_crosses_at(Index u, Index v, std::initializer_list<std::pair<const Exact_point*, Known_zeros>> points,
+                       const Direction* directions, std::uint32_t count, const Prefix& prefix = {})
   {
-    for (const Exact_point* x : points) {
-      set_point(*x, directions, count, prefix);
+    for (const auto& [x, zeros] : points) {
+      set_point(*x, directions, count, prefix, zeros);
       if (!items_cross(u, v)) return false;
     }
     return true;
   }
   bool here_perturbed() const { return m_perturbed; }
+
+  /// Is the orientation of these four points zero at the query's translation x by
+  /// construction (what set_point() or is_free() was told of x)? It is if they are the
+  /// points of the known zero predicate (Known_zeros::predicate, e.g. x is its root on a
+  /// segment), in any order; or if the moving points among them (shift +1) include the
+  /// vertices of the moving mesh that x's spans weigh and the static ones (shift 0) those of
+  /// the static mesh (Support). For with x = m + s, m and s in the affine hulls of those
+  /// vertices of the moving and of the static mesh, the first, reflected and translated
+  /// (-M_i + x), have -m + x = s in their affine hull, as the second have: two affine hulls of
+  /// k and l points that meet span at most k + l - 2 <= 2 dimensions, so the four points
+  /// lie in a plane. (Where x is a candidate p + q of a vertex and a triangle, or of two
+  /// edges, these are the contacts of the translated meshes: nearly all the orientations
+  /// that intervals do not decide.) The CD filter's predicates ask it before an exact
+  /// evaluation.
+  bool zero_by_construction(std::initializer_list<const Moving_point*> points) const
+  {
+    if (m_zero_of && same_points(*m_zero_of, points)) return true;
+    if (m_support[0].empty()) return false;
+    auto among = [&](const boost::container::static_vector<Index, 3>& support, const Tree_mesh& mesh, int shift) {
+      for (Index v : support) {
+        bool found = false;
+        for (const Moving_point* m : points) found = found || (m->shift == shift && m->base == &mesh.base[v]);
+        if (!found) return false;
+      }
+      return true;
+    };
+    return among(m_support[0], m_moving, 1) && among(m_support[1], m_static, 0);
+  }
+
   /// The last crossing pair found (moving item, static item), if any.
   const std::optional<std::pair<Index, Index>>& last_crossing() const { return m_hit; }
   /// Forgets what earlier queries found: the queries that follow then test the same
@@ -532,14 +588,17 @@ public:
     });
   }
 
-  /// Starts a plane H of translations, that of the triangle T (exact corners, not
-  /// collinear), whose points are perturbed as by set_point(x, directions, count, prefix)
+  /// Starts a plane H of translations, that of the triangle T with corners p_k + q_k
+  /// (`corners`: the samples (p_k, q_k); not collinear), whose points are perturbed as by set_point(x, directions, count, prefix)
   /// with prefix directions parallel to H: may_meet_plane() and on_plane() then tell about
   /// pairs, each triangle's extent along H's normal computed once per plane. It replaces the
   /// current query's directions (set_point() sets them again).
-  void set_plane(const std::array<Exact_point, 3>& T, const Direction* directions, std::uint32_t count)
+  void set_plane(const std::array<std::pair<Sample, Sample>, 3>& corners, const Direction* directions, std::uint32_t count)
   {
     Plane& p = m_plane;
+    std::array<Exact_point, 3> T;
+    for (int k = 0; k < 3; ++k) T[k] = exact_sum(*m_p, corners[k].first, *m_q, corners[k].second);
+    p.support = support({&corners[0], &corners[1], &corners[2]}); // H lies in the sum of their hulls
     auto relative = [&](int k) { // W0 Wk (T[k] - T[0]), a positive multiple
       Vec3<Exact_nt> r;
       for (int c = 0; c < 3; ++c) r[c] = T[k].X[c] * T[0].W - T[0].X[c] * T[k].W;
@@ -693,6 +752,9 @@ private:
     m_dirs = directions; m_dir_count = count; m_dir_first = first;
     m_prefix = {};
     m_query_on_plane = false;
+    const std::pair<Sample, Sample> pq(p, q);
+    m_support = support({&pq});
+    m_zero_of = nullptr;
     m_exact_x.reset();
     CGAL::Protect_FPU_rounding<true> guard;
     m_x = sample_interval(*m_p, p) + sample_interval(*m_q, q);
@@ -732,6 +794,47 @@ private:
                         up(b.xmax() + m_x[0].sup()), up(b.ymax() + m_x[1].sup()), up(b.zmax() + m_x[2].sup()));
   }
 
+  // ----- orientations zero by construction ----------------------------------------------
+  /// Vertices of the moving mesh ([0]) and of the static mesh ([1]) such that the query's
+  /// translation x is m + s, with m in the affine hull of the first (of P or Q, unreflected)
+  /// and s in that of the second; both empty when not known.
+  using Support = std::array<boost::container::static_vector<Index, 3>, 2>;
+
+  /// The support of the translations that `spans` hold: the vertices their samples weigh.
+  /// Empty if a side would have more than three (no orientation of four points could then
+  /// hold both sides).
+  Support support(const Spans& spans) const
+  {
+    std::array<boost::container::static_vector<Index, 3>, 2> pq; // of P, of Q
+    for (const std::pair<Sample, Sample>* span : spans)
+      for (int side = 0; side < 2; ++side) {
+        const Sample& s = side == 0 ? span->first : span->second;
+        std::int64_t total = 0;
+        for (int i = 0; i < 3; ++i) {
+          total += s.weights[i];
+          if (s.weights[i] == 0 || std::count(pq[side].begin(), pq[side].end(), s.vertices[i])) continue;
+          if (pq[side].size() == 3) return {};
+          pq[side].push_back(s.vertices[i]);
+        }
+        if (total != s.denominator) return {}; // not an affine combination
+      }
+    return m_p_moves ? Support{pq[0], pq[1]} : Support{pq[1], pq[0]};
+  }
+
+  /// Are these the four points of `known`, in any order (hence the same orientation, up to
+  /// its sign)?
+  static bool same_points(const Predicate_points& known, std::initializer_list<const Moving_point*> points)
+  {
+    std::array<bool, 4> used{};
+    for (const Moving_point* m : points) {
+      int k = 0;
+      while (k < 4 && (used[k] || known[k].base != m->base || known[k].shift != m->shift)) ++k;
+      if (k == 4) return false;
+      used[k] = true;
+    }
+    return true;
+  }
+
   // ----- the points of the perturbed predicates (perturbed_predicates.h) ----------------
   /// The position of m at the translation x (times S for Exact_nt: see exact_x()).
   template <class NT>
@@ -755,11 +858,15 @@ private:
   CGAL::Sign unperturbed_orientation(const Moving_point& a, const Moving_point& b, const Moving_point& c,
                                      const Moving_point& d, const F& value)
   {
-    if (!m_exact_doubles) return filtered_sign(value);
+    if (!m_exact_doubles)
+      return filtered_sign(value, [&] {
+        return zero_by_construction({&a, &b, &c, &d}) ? CGAL::ZERO : CGAL::sign(value(Exact_nt()));
+      });
     const double d0 = value_at_origin<double>(a, b, c, d);
     const Vec3<double> g = gradient<double>(a, b, c, d);
     return filtered_sign([&](auto) { return Interval(d0) + dot(to_nt<Interval>(g), m_x); },
                          [&] {
+                           if (zero_by_construction({&a, &b, &c, &d})) return CGAL::ZERO;
                            const auto& [X, S] = exact_x();
                            return CGAL::sign(S * Exact_nt(d0) + dot(to_nt<Exact_nt>(g), X));
                          });
@@ -978,6 +1085,7 @@ private:
 
   const Mesh_data* m_p;
   const Mesh_data* m_q;
+  bool m_p_moves; // Cd_geometry::p_moves
   const Tree_mesh& m_static;
   const Tree_mesh& m_moving;
   double m_margin;
@@ -995,6 +1103,8 @@ private:
   const Direction* m_dirs = nullptr;
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
   Prefix m_prefix{}; // set_point(): the first perturbation directions
+  Support m_support; // of the query's translation: zero_by_construction()
+  const Predicate_points* m_zero_of = nullptr; // Known_zeros::predicate
   bool m_query_on_plane = false; // set_point_on_plane()
   struct Plane // set_plane()
   {
@@ -1007,6 +1117,7 @@ private:
     double low = 0, high = 0; // of the plane along its normal
     Vec3<Exact_nt> exact_normal;
     Exact_point exact_point; // a point of the plane
+    Support support;         // of its points (set_point_on_plane())
     const Direction* directions = nullptr; // its points' perturbation
     std::uint32_t count = 0;
     CGAL::Sign side = CGAL::ZERO; // of the perturbation, along exact_normal

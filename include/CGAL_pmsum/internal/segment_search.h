@@ -69,6 +69,8 @@ Q to_rational(const Exact_nt& x)
 struct Segment_parameter
 {
   Exact_nt num, den;
+  /// The points of an orientation predicate zero at this parameter, if known (a root's).
+  std::optional<Predicate_points> zero_of;
   static Segment_parameter zero() { return {Exact_nt(0), Exact_nt(1)}; }
   static Segment_parameter one() { return {Exact_nt(1), Exact_nt(1)}; }
   CGAL::Exact_rational value() const { return to_rational(num) / to_rational(den); }
@@ -82,13 +84,29 @@ inline bool operator<(const Segment_parameter& a, const Segment_parameter& b) { 
 struct Translation_segment
 {
   Exact_point a, b;
+  /// The samples whose sums are a and b, if they are known (lattice points).
+  std::optional<std::array<std::pair<Sample, Sample>, 2>> sums;
 
-  Translation_segment(const Exact_point& pa, const Exact_point& pb) : a(pa), b(pb)
+  Translation_segment(const Exact_point& pa, const Exact_point& pb,
+                      std::optional<std::array<std::pair<Sample, Sample>, 2>> ends = std::nullopt)
+    : a(pa), b(pb), sums(std::move(ends))
   {
     if (pa.W == pb.W) return;
     a = {{pa.X[0] * pb.W, pa.X[1] * pb.W, pa.X[2] * pb.W}, pa.W * pb.W};
     b = {{pb.X[0] * pa.W, pb.X[1] * pa.W, pb.X[2] * pa.W}, pa.W * pb.W};
   }
+
+  /// The samples whose affine hulls' sum holds the point of parameter l, if known: those of
+  /// the ends (of one end at l = 0 or 1).
+  Spans spans(const Segment_parameter& l) const
+  {
+    if (!sums) return {};
+    if (CGAL::is_zero(l.num)) return end_spans(0);
+    if (l.num == l.den) return end_spans(1);
+    return {&(*sums)[0], &(*sums)[1]};
+  }
+  /// Those of end k (a: 0, b: 1).
+  Spans end_spans(int k) const { return sums ? Spans{&(*sums)[k]} : Spans{}; }
 
   /// The point of parameter l, exactly: (den Xa + num (Xb - Xa)) / (den W).
   Exact_point at(const Segment_parameter& l) const
@@ -107,16 +125,18 @@ class Segment_search
 public:
   explicit Segment_search(Cd_filter& filter) : m_filter(filter) {}
 
-  /// Starts the segments of the plane H of the triangle F (exact corners, not collinear):
+  /// Starts the segments of the plane H of the triangle F with corners p_k + q_k (`corners`:
+  /// the samples (p_k, q_k); not collinear):
   /// until the next call, every segment searched lies in H, its side (if any) is parallel to
   /// H, and its points are perturbed along `directions` (count of them). The item pairs that
   /// cross nowhere on H (Cd_filter::on_plane(), exact) are then neither searched nor tested
   /// by the queries (Cd_filter::set_point_on_plane()): most of those that touch along the
   /// segment (coplanar faces), which only exact tests could decide.
   /// Sets the CD filter's plane (Cd_filter::set_plane()).
-  void start_plane(const std::array<Exact_point, 3>& F, const Direction* directions, std::uint32_t count)
+  void start_plane(const std::array<std::pair<Sample, Sample>, 3>& corners, const Direction* directions,
+                   std::uint32_t count)
   {
-    m_filter.set_plane(F, directions, count);
+    m_filter.set_plane(corners, directions, count);
     m_in_plane = true;
   }
 
@@ -212,7 +232,8 @@ private:
   {
     if (range.covers_segment()) return true;
     if (range.low > 0 || range.high < 1) return false;
-    return m_filter.pair_crosses_at(pair.first, pair.second, {&s.a, &s.b}, m_directions, m_count, {m_side, nullptr});
+    return m_filter.pair_crosses_at(pair.first, pair.second, {{&s.a, {s.end_spans(0)}}, {&s.b, {s.end_spans(1)}}},
+                                    m_directions, m_count, {m_side, nullptr});
   }
 
   /// Does a pair known to cross near s (the ends' witnesses, whose crossing ranges are
@@ -327,7 +348,7 @@ private:
         hit = start;
       }
       if (!hit) {
-        set_query(s.at(at), on_gap);
+        set_query(s.at(at), on_gap, s, at);
         if (m_filter.is_free_here()) {
           m_free_at_start = hop == 0;
           return false;
@@ -377,7 +398,7 @@ private:
       const Exact_nt da = s.a.W * f.d0 + dot(f.g, s.a.X), db = s.b.W * f.d0 + dot(f.g, s.b.X);
       const CGAL::Sign sa = CGAL::sign(da), sb = CGAL::sign(db);
       if (sa == sb || sa == CGAL::ZERO || sb == CGAL::ZERO) return; // no root strictly inside
-      Segment_parameter l{da, da - db};
+      Segment_parameter l{da, da - db, Predicate_points{a, b, c, d}};
       if (CGAL::sign(l.den) == CGAL::NEGATIVE) { l.num = -l.num; l.den = -l.den; }
       r.push_back(l);
     });
@@ -390,16 +411,17 @@ private:
   /// left root.
   void set_element(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)
   {
-    set_query(s.at(roots[e / 2]), e % 2 == 1);
+    set_query(s.at(roots[e / 2]), e % 2 == 1, s, roots[e / 2]);
   }
 
-  /// Sets the query to x, perturbed first along the segment if `forward`, then to the side
-  /// (if any), then along the directions.
-  void set_query(const Exact_point& x, bool forward)
+  /// Sets the query to the point x of parameter l of s, perturbed first along the segment if
+  /// `forward`, then to the side (if any), then along the directions.
+  void set_query(const Exact_point& x, bool forward, const Translation_segment& s, const Segment_parameter& l)
   {
     const Cd_filter::Prefix prefix = {forward ? &m_forward : m_side, forward ? m_side : nullptr};
-    if (m_in_plane) m_filter.set_point_on_plane(x, prefix);
-    else m_filter.set_point(x, m_directions, m_count, prefix);
+    const Known_zeros zeros{s.spans(l), l.zero_of ? &*l.zero_of : nullptr};
+    if (m_in_plane) m_filter.set_point_on_plane(x, prefix, zeros);
+    else m_filter.set_point(x, m_directions, m_count, prefix, zeros);
   }
 
   bool free_at(const Translation_segment& s, const std::vector<Segment_parameter>& roots, std::size_t e)

@@ -375,10 +375,7 @@ public:
   /// narrow strips, Strips::followed), each searched once.
   void search_segments()
   {
-    const auto facet = m_lattice.facet_corners();
-    std::array<Exact_point, 3> F;
-    for (int k = 0; k < 3; ++k) F[k] = exact_sum(m_p, facet[k].first, m_q, facet[k].second);
-    m_search.start_plane(F, m_directions, m_fp.number_of_directions);
+    m_search.start_plane(m_lattice.facet_corners(), m_directions, m_fp.number_of_directions);
     std::vector<Segment_parameter> ends;
     for (std::size_t n = 0; n < m_to_search.size(); ++n) {
       const Segment ab = m_to_search[n];
@@ -391,7 +388,7 @@ public:
       if (in_leaves && *ca.leaf == *cb.leaf) continue;
       if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, in_leaves)) continue;
       ends.clear();
-      m_search.free_ends(Translation_segment(point(a), point(b)), m_directions, m_fp.number_of_directions, ends,
+      m_search.free_ends(lattice_segment(a, b), m_directions, m_fp.number_of_directions, ends,
                          {ca.witness, cb.witness});
       info.has_ends = !ends.empty();
       info.narrow = add_ends(a, b, ends, {}, false);
@@ -419,7 +416,7 @@ public:
       bool longer = false;
       for (std::size_t k = 0; k + 1 < known.size(); k += 2) longer = longer || compare(known[k], known[k + 1]) != CGAL::ZERO;
       if (!longer) continue;
-      const Translation_segment s(point(a), point(b));
+      const Translation_segment s = lattice_segment(a, b);
       Vec3<Exact_nt> inward;
       for (int c = 0; c < 3; ++c) inward[c] = point(o).X[c] * s.a.W - s.a.X[c] * point(o).W;
       ends.clear();
@@ -489,6 +486,14 @@ private:
       for (std::uint32_t c : m_lattice.cells()[i]) covered = covered || m_corner(c).status == Corner::covered;
       if (!m_searched_cell[i] && covered) search_cell(i);
     }
+  }
+
+  /// The segment between lattice points a and b.
+  Translation_segment lattice_segment(std::uint32_t a, std::uint32_t b)
+  {
+    return Translation_segment(point(a), point(b),
+                               std::array<std::pair<Sample, Sample>, 2>{{{m_lattice.p(a), m_lattice.q(a)},
+                                                                          {m_lattice.p(b), m_lattice.q(b)}}});
   }
 
   /// Lattice point k, exactly and rounded (each computed once).
