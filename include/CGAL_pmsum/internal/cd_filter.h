@@ -1032,38 +1032,47 @@ private:
       A[i] = {&m_moving.base[tm[i]], 1};
       B[i] = {&m_static.base[ts[i]], 0};
     }
-    if (separated_by_a_plane(t, s, m_x) || parallel_triangles(t, s) || (m_query_on_plane && on_plane(t, s).never))
+    const Plane_sides sides = plane_sides(t, s, m_x);
+    if (separated(sides[0]) || separated(sides[1]) || parallel_triangles(t, s) || (m_query_on_plane && on_plane(t, s).never))
       return false;
-    return triangles_cross(A, B);
+    return triangles_cross(A, B, sides);
   }
 
-  /// Quick exit of triangles_cross(): are all vertices of one triangle certainly strictly
-  /// on one side of the other's plane, for every translation in the box x? Interval signs
-  /// with the normals computed once; when certain they are the signs orientation() would
-  /// return (it looks at the perturbation only when the sign at x itself is zero).
-  bool separated_by_a_plane(Index t, Index s, const Vec3<Interval>& x) const
+  /// The signs of the vertices of a moving and a static triangle against the other's plane
+  /// (Perturbed_predicates::triangles_cross()), ZERO where not known.
+  using Plane_sides = std::array<std::array<CGAL::Sign, 3>, 2>;
+
+  /// Are all three sides known and alike: the triangle strictly on one side of the plane?
+  static bool separated(const std::array<CGAL::Sign, 3>& side)
+  { return side[0] != CGAL::ZERO && side[0] == side[1] && side[1] == side[2]; }
+
+  /// The sides of the vertices of moving triangle t and static triangle s against the
+  /// other's plane that intervals tell for every translation in the box x, from the normals
+  /// computed once: when certain they are the signs orientation() would return (it looks at
+  /// the perturbation only when the sign at x itself is zero); ZERO elsewhere. The static
+  /// plane's first: where it separates the triangles, the other's are not computed.
+  Plane_sides plane_sides(Index t, Index s, const Vec3<Interval>& x) const
   {
     const auto& tm = m_moving.mesh->triangles[t];
     const auto& ts = m_static.mesh->triangles[s];
-    const Vec3<Interval>& n_static = m_static.normals[s];
-    const Vec3<Interval>& n_moving = m_moving.normals[t];
     CGAL::Protect_FPU_rounding<true> guard;
     std::array<Vec3<Interval>, 3> a, b; // moving vertices (translated by x), static vertices
     for (int i = 0; i < 3; ++i) {
       a[i] = to_nt<Interval>(m_moving.base[tm[i]]) + x;
       b[i] = to_nt<Interval>(m_static.base[ts[i]]);
     }
-    auto one_side = [](const std::array<Vec3<Interval>, 3>& p, const Vec3<Interval>& o, const Vec3<Interval>& n) {
-      int sign = 0;
+    auto sides = [](const std::array<Vec3<Interval>, 3>& p, const Vec3<Interval>& o, const Vec3<Interval>& n) {
+      std::array<CGAL::Sign, 3> side;
       for (int i = 0; i < 3; ++i) {
         const Interval v = dot(p[i] - o, n);
-        const int si = v.inf() > 0 ? 1 : v.sup() < 0 ? -1 : 0;
-        if (si == 0 || (i > 0 && si != sign)) return false;
-        sign = si;
+        side[i] = v.inf() > 0 ? CGAL::POSITIVE : v.sup() < 0 ? CGAL::NEGATIVE : CGAL::ZERO;
       }
-      return true;
+      return side;
     };
-    return one_side(a, b[0], n_static) || one_side(b, a[0], n_moving);
+    Plane_sides r{};
+    r[0] = sides(a, b[0], m_static.normals[s]);
+    if (!separated(r[0])) r[1] = sides(b, a[0], m_moving.normals[t]);
+    return r;
   }
 
   std::array<Moving_point, 3> static_triangle(Index s) const

@@ -216,13 +216,18 @@ public:
     });
   }
 
-  /// Do the triangles A and B cross?
-  bool triangles_cross(const std::array<Point, 3>& A, const std::array<Point, 3>& B)
+  /// Do the triangles A and B cross? `known`: the sides of A's points w.r.t. B's plane
+  /// (orientation(B[0], B[1], B[2], A[i])) and of B's w.r.t. A's, where already known (ZERO
+  /// where not: orientation() never returns it).
+  bool triangles_cross(const std::array<Point, 3>& A, const std::array<Point, 3>& B,
+                       const std::array<std::array<CGAL::Sign, 3>, 2>& known = {})
   {
-    std::array<CGAL::Sign, 3> sa, sb; // sides of A's points w.r.t. B's plane, and reverse
-    for (int i = 0; i < 3; ++i) sa[i] = orientation(B[0], B[1], B[2], A[i]);
+    std::array<CGAL::Sign, 3> sa = known[0], sb = known[1]; // sides of A's points w.r.t. B's plane, and reverse
+    for (int i = 0; i < 3; ++i)
+      if (sa[i] == CGAL::ZERO) sa[i] = orientation(B[0], B[1], B[2], A[i]);
     if (sa[0] == sa[1] && sa[1] == sa[2]) return false;
-    for (int i = 0; i < 3; ++i) sb[i] = orientation(A[0], A[1], A[2], B[i]);
+    for (int i = 0; i < 3; ++i)
+      if (sb[i] == CGAL::ZERO) sb[i] = orientation(A[0], A[1], A[2], B[i]);
     if (sb[0] == sb[1] && sb[1] == sb[2]) return false;
     return edge_crosses(A, sa, B) || edge_crosses(B, sb, A);
   }
