@@ -303,7 +303,7 @@ public:
     m_prefix = {};
     m_query_on_plane = false;
     m_support = {};
-    m_zero_of = nullptr;
+    m_zero_of.reset();
     m_exact_x.reset();
     m_x = to_nt<Interval>(t);
     return configuration_is_free();
@@ -327,7 +327,8 @@ public:
     m_prefix = prefix;
     m_query_on_plane = false;
     m_support = support(zeros.spans);
-    m_zero_of = zeros.predicate;
+    m_zero_of.reset();
+    if (zeros.predicate) m_zero_of = *zeros.predicate;
     CGAL::Protect_FPU_rounding<true> guard;
     for (std::size_t k = 0; k < prefix.size(); ++k)
       if (prefix[k])
@@ -589,8 +590,8 @@ public:
   }
 
   /// Starts a plane H of translations, that of the triangle T with corners p_k + q_k
-  /// (`corners`: the samples (p_k, q_k); not collinear), whose points are perturbed as by set_point(x, directions, count, prefix)
-  /// with prefix directions parallel to H: may_meet_plane() and on_plane() then tell about
+  /// (`corners`: the samples (p_k, q_k); not collinear), whose points are perturbed as by
+  /// set_point(x, directions, count, prefix) with prefix directions parallel to H: may_meet_plane() and on_plane() then tell about
   /// pairs, each triangle's extent along H's normal computed once per plane. It replaces the
   /// current query's directions (set_point() sets them again).
   void set_plane(const std::array<std::pair<Sample, Sample>, 3>& corners, const Direction* directions, std::uint32_t count)
@@ -754,7 +755,7 @@ private:
     m_query_on_plane = false;
     const std::pair<Sample, Sample> pq(p, q);
     m_support = support({&pq});
-    m_zero_of = nullptr;
+    m_zero_of.reset();
     m_exact_x.reset();
     CGAL::Protect_FPU_rounding<true> guard;
     m_x = sample_interval(*m_p, p) + sample_interval(*m_q, q);
@@ -1113,7 +1114,7 @@ private:
   std::uint32_t m_dir_count = 0, m_dir_first = 0;
   Prefix m_prefix{}; // set_point(): the first perturbation directions
   Support m_support; // of the query's translation: zero_by_construction()
-  const Predicate_points* m_zero_of = nullptr; // Known_zeros::predicate
+  std::optional<Predicate_points> m_zero_of; // Known_zeros::predicate
   bool m_query_on_plane = false; // set_point_on_plane()
   struct Plane // set_plane()
   {
