@@ -564,7 +564,8 @@ TEST_CASE("orientations zero by construction: the CD filter answers as if told n
       untold.for_each_overlapping_pair(enclosure(x), [&](Index u, Index v) { pairs.emplace_back(u, v); return false; });
       told.set_point(x, nullptr, 0, {}, zeros);
       untold.set_point(x, nullptr, 0);
-      for (const auto& [u, v] : pairs) {
+      for (const auto& uv : pairs) {
+        const Index u = uv.first, v = uv.second; // (lambdas below capture them: no structured binding)
         untold.for_each_predicate(u, v, [&](const Moving_point& a, const Moving_point& b, const Moving_point& c,
                                             const Moving_point& d) {
           untold_zeros += untold.zero_by_construction({&a, &b, &c, &d});
