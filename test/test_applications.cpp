@@ -604,6 +604,35 @@ TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", 
   CHECK(faces(tiny).size() == 12);
 }
 
+TEST_CASE("splits_a_part: the points of one part of the sum on two volumes", "[applications][mesh]")
+{
+  using EP = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  auto positions = [](const Mesh& m) {
+    std::vector<EP> p;
+    for (auto v : vertices(m)) p.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
+    return p;
+  };
+  using CGAL::Pmsum::internal::splits_a_part;
+  // two disjoint boxes: one part on both splits it; a part each does not
+  Mesh two = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  two.join(to_mesh<Mesh>(box({2, 0, 0}, {3, 1, 1})));
+  const std::vector<EP> p2 = positions(two);
+  REQUIRE(p2.size() == 16);
+  CHECK(splits_a_part(two, p2, std::vector<std::size_t>(16, 0)));
+  std::vector<std::size_t> each(16, 0);
+  std::fill(each.begin() + 8, each.end(), 1);
+  CHECK_FALSE(splits_a_part(two, p2, each));
+  // a box with a void: one volume, whatever the parts
+  Mesh hollow = to_mesh<Mesh>(box({0, 0, 0}, {3, 3, 3}));
+  Mesh cavity = to_mesh<Mesh>(box({1, 1, 1}, {2, 2, 2}));
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(cavity);
+  hollow.join(cavity);
+  CHECK_FALSE(splits_a_part(hollow, positions(hollow), std::vector<std::size_t>(16, 0)));
+  // a solid inside that void is a volume of its own
+  hollow.join(to_mesh<Mesh>(box({1.25, 1.25, 1.25}, {1.75, 1.75, 1.75})));
+  CHECK(splits_a_part(hollow, positions(hollow), std::vector<std::size_t>(24, 0)));
+}
+
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 
 TEST_CASE("orient_manifold_triangles: what CGAL's orient_polygon_soup and is_polygon_soup_a_polygon_mesh tell",

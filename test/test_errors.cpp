@@ -212,6 +212,26 @@ TEST_CASE("touching and nested closed components are valid", "[errors]")
              Contains("P component 2 is oriented inward inside the void of component 1"));
 }
 
+TEST_CASE("solids: components that touch, and a void with its container, are one", "[errors]")
+{
+  using CGAL::Pmsum::internal::Index;
+  auto solids = [](const Mesh& P) {
+    CGAL::Pmsum::internal::Mesh_descriptors<Mesh> desc;
+    const auto m = CGAL::Pmsum::internal::make_mesh_data(P, get(CGAL::vertex_point, P), false, false, "P", desc);
+    return CGAL::Pmsum::internal::Solid_checker(m, "P").solids();
+  };
+  // touching along a face, at a vertex; a hair apart
+  CHECK(solids(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})})) == std::vector<Index>{0, 0});
+  CHECK(solids(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({1, 1, 1}, {2, 2, 2})})) == std::vector<Index>{0, 0});
+  CHECK(solids(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({1 + 1e-9, 0, 0}, {2, 1, 1})})) == std::vector<Index>{0, 1});
+  // a chain (0 touches 2, 2 touches 1) and one apart
+  CHECK(solids(mesh_of({box({0, 0, 0}, {1, 1, 1}), box({2, 0, 0}, {3, 1, 1}), box({1, 0, 0}, {2, 1, 1}),
+                        box({5, 0, 0}, {6, 1, 1})})) == std::vector<Index>{0, 0, 0, 1});
+  // a void is its shell's; a solid inside the void is apart
+  CHECK(solids(mesh_of({box({0, 0, 0}, {5, 5, 5}), reversed(box({1, 1, 1}, {4, 4, 4})), box({2, 2, 2}, {3, 3, 3})})) ==
+        std::vector<Index>{0, 0, 1});
+}
+
 TEST_CASE("each closed component is oriented on its own", "[errors]")
 {
   // an outward box and a disjoint inward box: the total volume is positive

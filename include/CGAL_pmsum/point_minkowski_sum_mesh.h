@@ -58,22 +58,78 @@ struct Mesh_statistics
 
 namespace internal {
 
-/// The number of outer shells (not voids) of a mesh, and the most the sum can have: it has at
-/// most one connected piece per pair of connected components of P and Q (the sum of two
-/// connected sets is connected), so more outer shells are pieces of the reconstruction's own
-/// (a sharp corner cut off, a bubble that bubble removal left).
-inline std::size_t outer_shells(const Mesh_checks& c) { return c.shells - c.void_shells; }
-inline std::size_t most_outer_shells(const Mesh_data& mp, const Mesh_data& mq)
-{ return mp.components.size() * mq.components.size(); }
+/// The connected parts the sum is made of: the sum of a solid of P and a solid of Q
+/// (Solid_checker::solids(): components that touch, voids with their container) is connected,
+/// so the points of one such part lie on the boundary of one volume of the sum (an outer
+/// shell with its voids). A mesh that puts them on two has split a connected part (a sharp
+/// corner cut off, a bubble left, a seam between touching components opened).
+class Sum_parts
+{
+public:
+  Sum_parts(const Mesh_data& mp, const Mesh_data& mq) : m_p(solids(mp)), m_q(solids(mq)) {}
+
+  /// The part of the output point of samples sp of P and sq of Q.
+  std::size_t of(const Mesh_data& mp, const Mesh_data& mq, const Sample& sp, const Sample& sq) const
+  { return std::size_t(m_p[component(mp, sp)]) * m_q.size() + m_q[component(mq, sq)]; }
+
+private:
+  static std::vector<Index> solids(const Mesh_data& m)
+  {
+    const std::string name; // (names only errors, which solids() does not report)
+    return Solid_checker(m, name).solids();
+  }
+  static Index component(const Mesh_data& m, const Sample& s)
+  {
+    for (int i = 0; i < 3; ++i)
+      if (s.weights[i] != 0) return m.vertex_component[s.vertices[i]];
+    return m.vertex_component[s.vertices[0]];
+  }
+
+  std::vector<Index> m_p, m_q;
+};
+
+/// Does `mesh` (closed, manifold, without self-intersections) put the points of one part of
+/// the sum (Sum_parts) on the boundaries of two of its volumes? `part[i]` is the part of the
+/// point at `positions[i]`; the mesh's vertices are such points.
+template <class TriangleMesh>
+bool splits_a_part(const TriangleMesh& mesh, const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
+                   const std::vector<std::size_t>& part)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Key = std::array<double, 3>;
+  struct Hash
+  {
+    std::size_t operator()(const Key& k) const
+    {
+      std::size_t h = 0;
+      for (double c : k) h = h * 1000003u ^ std::hash<double>()(c);
+      return h;
+    }
+  };
+  std::unordered_map<Key, std::size_t, Hash> part_at;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    part_at.emplace(Key{positions[i].x(), positions[i].y(), positions[i].z()}, part[i]);
+  auto volume_id = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  if (PMP::volume_connected_components(mesh, volume_id) < 2) return false;
+  std::unordered_map<std::size_t, std::size_t> volume_of; // part -> volume
+  for (auto v : vertices(mesh)) {
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    const auto it = part_at.find(Key{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    if (it == part_at.end()) continue;
+    const std::size_t volume = get(volume_id, face(halfedge(v, mesh), mesh));
+    if (volume_of.emplace(it->second, volume).first->second != volume) return true;
+  }
+  return false;
+}
 
 /// Why the mesh of a level was refused, for Mesh_reconstruction_failed.
-inline std::string level_failure(const Mesh_statistics& ms, std::size_t most_outer)
+inline std::string level_failure(const Mesh_statistics& ms, bool split)
 {
   if (ms.checks.valid() && ms.checks.shells == 0) return "was empty";
   if (!ms.checks.valid()) return "was " + ms.checks.failures();
-  if (outer_shells(ms.checks) > most_outer)
-    return "had " + std::to_string(outer_shells(ms.checks)) + " outer shells, more than the sum has (at most " +
-           std::to_string(most_outer) + ")";
+  if (split)
+    return "split a connected part of the sum (a solid of P plus one of Q) into " +
+           std::to_string(ms.checks.shells - ms.checks.void_shells) + " outer shells";
   return "left output points up to " + std::to_string(ms.point_distance / ms.covering_distance) +
          " times that d from the mesh (a part of the boundary missing)";
 }
@@ -100,7 +156,7 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
-/// outer shells against most_outer_shells(), the points' distance to the mesh); if a check
+/// no connected part of the sum split (splits_a_part()), the points' distance to the mesh); if a check
 /// fails, d is halved, twice at most, reusing the coarser decisions; then
 /// Mesh_reconstruction_failed, which says why each level was refused.
 /// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
@@ -113,16 +169,18 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   const int max_refinements = 2;
-  const std::size_t most_outer = most_outer_shells(mp, mq);
+  const Sum_parts parts(mp, mq);
   std::string failures;
   for (int level = 0; level <= max_refinements; ++level) {
     const double dl = d / double(1 << level);
     const auto t_sum = Clock::now();
     std::vector<Point> points;
     std::vector<Epick::Vector_3> normals, face_normals; // (face_normals: of a face through the point)
+    std::vector<std::size_t> part;                      // Sum_parts::of() the point
     stats = Statistics();
     pipeline.run_level(dl, stats, [&](const Sample& sp, const Sample& sq, const Direction& direction, const Trim* trim) {
       points.emplace_back(output_point<GT>(mp, mq, sp, sq, trim));
+      part.push_back(parts.of(mp, mq, sp, sq));
       // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is given.
       face_normals.push_back(output_normal<Epick>(mp, mq, direction));
       if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
@@ -158,8 +216,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
       ms.refinements = level;
-      if (ms.checks.valid() && ms.checks.shells > 0 && outer_shells(ms.checks) <= most_outer &&
-          ms.point_distance < dl && !across) {
+      const bool split = ms.checks.valid() && splits_a_part(mesh, positions, part);
+      if (ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl && !across) {
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
         ms.by_planes = way == 1;
@@ -167,7 +225,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       }
       failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
-                  (across ? "closed a hole over empty space" : level_failure(ms, most_outer));
+                  (across ? "closed a hole over empty space" : level_failure(ms, split));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
   }
@@ -183,8 +241,10 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// vertices are output points of point_minkowski_sum() (exactly on the boundary, rounded
 /// only if the mesh's kernel is inexact), joined by CGAL's advancing-front surface
 /// reconstruction. The mesh returned is closed, 2-manifold, free of self-intersections and
-/// bounds a volume (outer shells outward, voids inward), it has no more outer shells than the
-/// sum can have (one per pair of connected components of `P` and `Q`), and every output point
+/// bounds a volume (outer shells outward, voids inward), it never splits a connected part of
+/// the sum (the sum of a solid of `P` and a solid of `Q`, components that touch and a void with
+/// its container counting as one solid: the output points of such a part all lie on one
+/// outer shell and its voids), and every output point
 /// of the sum lies closer than `d'` to it (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
 /// planes of the sum's faces; `Mesh_statistics::by_planes`); if that fails too, the sum is

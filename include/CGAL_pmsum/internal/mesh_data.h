@@ -16,6 +16,8 @@
 #include <CGAL_pmsum/internal/region_locator.h>
 
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Intersections_3/Triangle_3_Triangle_3.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -249,20 +251,12 @@ public:
         return sum;
       });
     }
-    // parent[c]: the innermost closed component containing c (no_index: none); depth[c]
-    std::vector<std::vector<Index>> containers(nc);
-    for (Index a = 0; a < nc; ++a)
-        for (Index b = 0; b < nc; ++b)
-          if (a != b && m.components[a].closed && m.components[b].closed && box_inside(b, a) && inside(b, a))
-            containers[b].push_back(a);
+    const std::vector<std::vector<Index>> containers = closed_containers();
     for (Index c = 0; c < nc; ++c) {
       if (!m.components[c].closed || volume[c] == CGAL::ZERO) continue;
       const std::size_t depth = containers[c].size();
       if ((depth % 2 == 0) == (volume[c] == CGAL::POSITIVE)) continue;
-      // the innermost container: the one with the most containers itself
-      Index parent = no_index;
-      for (Index a : containers[c])
-        if (parent == no_index || containers[a].size() > containers[parent].size()) parent = a;
+      const Index parent = innermost(containers, c);
       const std::string sc = std::to_string(c), sp = std::to_string(parent);
       if (depth == 0)
         throw Invalid_input(name + " is oriented inward (component " + sc + " has a negative volume); reverse "
@@ -320,8 +314,79 @@ public:
     return false;
   }
 
+  /// The solid (or surface) each component is part of, numbered from 0 in the order of the
+  /// components: components whose surfaces meet (touch or cross) are one, and a void (a closed
+  /// component inside an odd number of others) is one with its innermost container. Each is
+  /// connected, so the sum of one with a connected set is connected. Exact.
+  std::vector<Index> solids() const
+  {
+    const std::size_t nc = m.components.size();
+    std::vector<Index> root(nc);
+    std::iota(root.begin(), root.end(), Index(0));
+    auto find = [&](Index c) {
+      while (root[c] != c) c = root[c] = root[root[c]];
+      return c;
+    };
+    auto unite = [&](Index a, Index b) {
+      a = find(a), b = find(b);
+      root[(std::max)(a, b)] = (std::min)(a, b);
+    };
+    if (nc > 1) {
+      using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Index>;
+      using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+      auto triangle = [&](Index t) {
+        const auto& v = m.triangles[t];
+        auto p = [&](int i) { return K::Point_3(pt(v[i])[0], pt(v[i])[1], pt(v[i])[2]); };
+        return K::Triangle_3(p(0), p(1), p(2));
+      };
+      std::vector<Box> boxes;
+      for (Index t = 0; t < m.number_of_triangles(); ++t) {
+        CGAL::Bbox_3 b;
+        for (Index v : m.triangles[t]) b += CGAL::Bbox_3(pt(v)[0], pt(v)[1], pt(v)[2], pt(v)[0], pt(v)[1], pt(v)[2]);
+        boxes.emplace_back(b, t);
+      }
+      // (closed boxes, the default: triangles that only touch have touching boxes)
+      CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+        const Index ca = m.triangle_component[a.info()], cb = m.triangle_component[b.info()];
+        if (find(ca) != find(cb) && CGAL::do_intersect(triangle(a.info()), triangle(b.info()))) unite(ca, cb);
+      });
+      const std::vector<std::vector<Index>> containers = closed_containers();
+      for (Index c = 0; c < nc; ++c)
+        if (containers[c].size() % 2 == 1) unite(c, innermost(containers, c));
+    }
+    std::vector<Index> solid(nc), number(nc, no_index);
+    Index next = 0;
+    for (Index c = 0; c < nc; ++c) {
+      Index& n = number[find(c)];
+      if (n == no_index) n = next++;
+      solid[c] = n;
+    }
+    return solid;
+  }
+
 private:
   const P3& pt(Index v) const { return m.points[v]; }
+
+  /// For each component, the closed components that contain it (none for an open one).
+  std::vector<std::vector<Index>> closed_containers() const
+  {
+    const std::size_t nc = m.components.size();
+    std::vector<std::vector<Index>> containers(nc);
+    for (Index a = 0; a < nc; ++a)
+      for (Index b = 0; b < nc; ++b)
+        if (a != b && m.components[a].closed && m.components[b].closed && box_inside(b, a) && inside(b, a))
+          containers[b].push_back(a);
+    return containers;
+  }
+
+  /// The innermost of the containers of c: the one with the most containers itself.
+  static Index innermost(const std::vector<std::vector<Index>>& containers, Index c)
+  {
+    Index parent = no_index;
+    for (Index a : containers[c])
+      if (parent == no_index || containers[a].size() > containers[parent].size()) parent = a;
+    return parent;
+  }
 
   bool box_inside(Index b, Index a) const
   {
