@@ -689,6 +689,52 @@ TEST_CASE("orient_manifold_triangles: what CGAL's orient_polygon_soup and is_pol
 
 // The advancing front leaves holes on this box with a box-shaped void; plane by plane meshes
 // it (every point joins the planes it lies on, so the void's edges have their rows on both faces).
+TEST_CASE("mesh of a sharp convex sum at a coarse d: the refinement keeps the creases and corners",
+          "[applications][mesh]")
+{
+  // An octahedron (diagonal 4) plus a tetrahedron of edge 1/128: the sum's corners and the strips along
+  // its edges are far narrower than d. At d the advancing front cuts the corners off (a corner
+  // closed on its own: a connected part split), and plane by plane leaves the creases open (the
+  // net keeps a face's row beside a crease, not the crease's); the refinement keeps the points
+  // on sharp creases and gives them the planes of both faces.
+  const Mesh P = to_mesh<Mesh>(octahedron(2)), Q = to_mesh<Mesh>(tetrahedron(1. / 128));
+  std::vector<IK::Point_3> sums;
+  for (auto v : vertices(P))
+    for (auto w : vertices(Q)) sums.push_back(P.point(v) + (Q.point(w) - CGAL::ORIGIN));
+  Mesh hull;
+  CGAL::convex_hull_3(sums.begin(), sums.end(), hull);
+  CGAL::Polygon_mesh_processing::triangulate_faces(hull);
+  std::vector<IK::Plane_3> planes;
+  for (auto f : faces(hull)) {
+    const auto h = halfedge(f, hull);
+    planes.emplace_back(hull.point(source(h, hull)), hull.point(target(h, hull)), hull.point(target(next(h, hull), hull)));
+  }
+  for (double d : {0.21, 0.35}) {
+    INFO("d = " << d);
+    Mesh m;
+    CGAL::Pmsum::Mesh_statistics ms;
+    REQUIRE_NOTHROW(CGAL::point_minkowski_sum_mesh(P, Q, d, m, CGAL::parameters::mesh_statistics(ms)));
+    const auto c = CGAL::Pmsum::check_mesh(m);
+    REQUIRE(c.valid());
+    CHECK(c.shells == 1);
+    // every vertex on the hull's boundary: on no facet's outer side, on one facet's plane
+    std::size_t off = 0;
+    for (auto v : vertices(m)) {
+      double highest = -HUGE_VAL;
+      for (const auto& h : planes) {
+        const IK::Vector_3 n = h.orthogonal_vector();
+        highest = (std::max)(highest, (h.a() * m.point(v).x() + h.b() * m.point(v).y() + h.c() * m.point(v).z() + h.d()) /
+                                        std::sqrt(n.squared_length()));
+      }
+      off += std::abs(highest) > 1e-12;
+    }
+    CHECK(off == 0);
+    const auto dist = CGAL::Pmsum::measure_mesh_distance({CGAL::Pmsum::internal::to_shell(hull)}, m, d / 8);
+    CHECK(dist.mesh_to_surface < d);
+    CHECK(dist.surface_to_mesh < d);
+  }
+}
+
 TEST_CASE("mesh of a sum with a void: two shells, the void inward, within d of the exact boundary",
           "[applications][mesh]")
 {

@@ -177,6 +177,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     std::vector<Point> points;
     std::vector<Epick::Vector_3> normals, face_normals; // (face_normals: of a face through the point)
     std::vector<std::size_t> part;                      // Sum_parts::of() the point
+    Crease_planes crease_planes;                        // the faces at points on creases
     stats = Statistics();
     pipeline.run_level(dl, stats, [&](const Sample& sp, const Sample& sq, const Direction& direction, const Trim* trim) {
       points.emplace_back(output_point<GT>(mp, mq, sp, sq, trim));
@@ -185,7 +186,12 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       face_normals.push_back(output_normal<Epick>(mp, mq, direction));
       if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
       else normals.push_back(face_normals.back());
-    }, start, level == 0 ? Strips::as_covering_needs : Strips::followed);
+      if (!trim)
+        for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w) {
+          for (const Vec3<double>& n : w) crease_planes.emplace_back(points.size() - 1, Epick::Vector_3(n[0], n[1], n[2]));
+        });
+    }, start, level == 0 ? Strips::as_covering_needs : Strips::followed,
+       level == 0 ? Creases::as_covering_needs : Creases::sharp_kept);
     start = Clock::now();
     ms.sum = stats;
     ms.seconds_sum += seconds_since(t_sum);
@@ -205,7 +211,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       } else {
         cd.emplace(geometry);
         cover.emplace(pipeline.pairs(), mp, mq);
-        triangles = plane_triangles(positions, face_normals, dl, free_at, *cover);
+        triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, *cover);
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)

@@ -94,7 +94,7 @@ struct Tentative
   Sample p, q;
   Point3 x;
   std::uint32_t direction; // index in Candidate_pairs::directions, or `untested`
-  bool kept;               // a vertex + vertex sum kept whatever covers it
+  bool kept;               // output whatever covers it (Decision_context::kept())
 };
 
 /// Counters of the decision stage (per thread, added up at the end).
@@ -117,6 +117,10 @@ struct Decision_totals
   Cd_statistics filter;
 };
 
+/// Which points on the sum's creases a level outputs: those the covering needs, or also every
+/// one on a sharp crease (on_sharp_crease(); a mesh's refinement: its creases and corners).
+enum class Creases : std::uint8_t { as_covering_needs, sharp_kept };
+
 /// What the decisions of one level read. Everything but `filter` is shared and read-only
 /// while pairs are decided in parallel.
 struct Decision_context
@@ -130,11 +134,23 @@ struct Decision_context
   const std::vector<Point3>* normals = nullptr; // unit outward normal of each direction (for the net)
   bool use_cd_filter = true;           // false: every candidate is output
   bool keep_vertex_sums = false;       // vertex + vertex boundary points are output even if covered
+  bool keep_sharp_creases = false;     // and those on sharp creases (on_sharp_crease()), for a mesh
   bool record_decisions = false;       // coarse to fine: fill Pair_decision::tested
   bool trim_points = true;             // search the trim curves of 2-dimensional pairs (trim_points.h)
   bool islands = true;                 // and the islands inside lattice cells (island_search.h)
   double d = 0;                        // the covering distance
   Strips strips = Strips::as_covering_needs; // how far the trim search follows narrow strips
+
+  /// Is the boundary point p + q output even if covered (but not twice: a point of the net
+  /// at the same place covers it)?
+  bool kept(const Sample& p, const Sample& q) const
+  {
+    return (keep_vertex_sums && p.origin.dimension == 0 && q.origin.dimension == 0) ||
+           (keep_sharp_creases && on_sharp_crease(p.origin, q.origin, sp->mesh(), sq->mesh()));
+  }
+  /// Does `net` cover x, a point that is kept() or not?
+  static bool covers(const Covering_net& net, const Point3& x, const Covering_net::Normals& normals, bool kept)
+  { return kept ? net.covers_within(x, 0) : net.covers(x, normals); }
 
   /// The unit outward normals of the directions of pair fp (none if unknown): those of the
   /// pair's points, for the net.
@@ -225,7 +241,7 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     const Sample &p = candidates.p(ip), &q = candidates.q(iq);
     const Point3 x = positions ? candidates.position(ip, iq) : Point3{};
     if (!filter || !c.use_cd_filter) { out.tentative.push_back({p, q, x, fp.first_direction, true}); return; }
-    const bool kept = c.keep_vertex_sums && p.origin.dimension == 0 && q.origin.dimension == 0;
+    const bool kept = c.kept(p, q);
     std::uint32_t decision = untested;
     if (old_p[ip] && old_q[iq]) {
       decision = c.cache->find(Decision_cache::Key::of(i, p, q));
@@ -234,13 +250,13 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     if (decision == untested && c.octree && c.octree->certified(x)) {
       ++counters.certified;
       // What the trim search knows must not depend on the octree: as if tested below.
-      if (!kept && c.net && c.net->covers(x, normals)) known(ip, iq, Corner::covered);
-      else if (kept || !own || !own->covers(x, normals)) known(ip, iq, Corner::inside, &x);
+      if (c.net && c.covers(*c.net, x, normals, kept)) known(ip, iq, Corner::covered);
+      else if (!own || !c.covers(*own, x, normals, kept)) known(ip, iq, Corner::inside, &x);
       return;
     }
     if (decision == inner) { known(ip, iq, Corner::inside, nullptr); return; }
-    if (!kept && c.net && c.net->covers(x, normals)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
-    if (!kept && own && own->covers(x, normals)) { out.tentative.push_back({p, q, x, untested, false}); return; }
+    if (c.net && c.covers(*c.net, x, normals, kept)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
+    if (own && c.covers(*own, x, normals, kept)) { out.tentative.push_back({p, q, x, untested, kept}); return; }
     if (decision == untested) {
       decision = cd_decision(*filter, *c.pairs, fp, p, q);
       if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), decision);
@@ -308,7 +324,7 @@ void commit_piece(const Decision_context& c, std::size_t i, Pair_decision& decid
     for (const auto& [key, decision] : decided.tested) cache->add(key, decision);
   const Covering_net::Normals normals = c.normals_of(fp);
   for (Tentative& t : decided.tentative) {
-    if (!t.kept && net && net->covers(t.x, normals)) {
+    if (net && c.covers(*net, t.x, normals, t.kept)) {
       counters.covered += (t.direction == untested);
       continue;
     }

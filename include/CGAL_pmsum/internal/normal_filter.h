@@ -28,6 +28,9 @@
 #include <CGAL_pmsum/internal/sampling.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -127,6 +130,63 @@ inline bool edge_is_extreme(const Mesh_data& M, Index e, const Direction& d,
            using NT = decltype(nt);
            return dot(M.triangle_normal<NT>(edge.f[0]), d.vector<NT>(P, Q));
          }) == CGAL::POSITIVE;
+}
+
+/// The outward normals at which edge e of mesh E and vertex v of mesh V are both locally
+/// extreme: those of e's wedge (between its two triangles' normals) that leave every edge of
+/// v's star below v. If they are a wedge of positive angle, e + v is a crease of the sum's
+/// boundary where it is on it, between two faces whose normals are the wedge's ends
+/// (returned, not normalized): two triangles of E moved by v, or one and a strip of e plus an
+/// edge of V. Double arithmetic: it only chooses points and planes for a mesh.
+inline std::optional<std::array<Vec3<double>, 2>> crease_wedge(const Mesh_data& E, Index e, const Mesh_data& V, Index v)
+{
+  const auto& edge = E.edges[e];
+  if (edge.f[1] == no_index || !edge.convex) return std::nullopt;
+  const Vec3<double> n0 = E.triangle_normal<double>(edge.f[0]), n1 = E.triangle_normal<double>(edge.f[1]);
+  const Vec3<double> dn = n1 - n0;
+  double lo = 0, hi = 1; // the wedge n0 + t (n1 - n0), t in [lo, hi]
+  for (Index i = V.vertex_edge_offsets[v]; i < V.vertex_edge_offsets[v + 1] && lo < hi; ++i) {
+    const auto& f = V.edges[V.vertex_edges[i]];
+    const Vec3<double> u = V.points[f.v[0] == v ? f.v[1] : f.v[0]] - V.points[v];
+    const double a = dot(n0, u), b = dot(dn, u); // a + t b <= 0
+    if (b > 0) hi = (std::min)(hi, -a / b);
+    else if (b < 0) lo = (std::max)(lo, -a / b);
+    else if (a > 0) return std::nullopt;
+  }
+  if (!(lo < hi)) return std::nullopt;
+  auto at = [&](double t) { return n0 + Vec3<double>{t * dn[0], t * dn[1], t * dn[2]}; };
+  return std::array<Vec3<double>, 2>{at(lo), at(hi)};
+}
+
+/// Calls f(wedge) for each crease_wedge() of the sum of sample features fp of P and fq of Q:
+/// an edge and a vertex (one), or two vertices (every edge at either with the other vertex);
+/// none for features of higher dimensions.
+template <class F>
+void for_each_crease_wedge(Feature fp, Feature fq, const Mesh_data& P, const Mesh_data& Q, F&& f)
+{
+  if (fp.dimension + fq.dimension > 1) return;
+  auto edges_and_vertex = [&](Feature a, Feature v, const Mesh_data& E, const Mesh_data& V) {
+    auto one = [&](Index e) {
+      if (const auto w = crease_wedge(E, e, V, v.index)) f(*w);
+    };
+    if (a.dimension == 1) one(a.index);
+    else
+      for (Index i = E.vertex_edge_offsets[a.index]; i < E.vertex_edge_offsets[a.index + 1]; ++i) one(E.vertex_edges[i]);
+  };
+  if (fq.dimension == 0) edges_and_vertex(fp, fq, P, Q);
+  if (fp.dimension == 0) edges_and_vertex(fq, fp, Q, P);
+}
+
+/// Is the sum of sample features fp of P and fq of Q on a sharp crease of the sum (a crease
+/// wedge wider than 20 degrees), or a vertex sum at an end of one?
+inline bool on_sharp_crease(Feature fp, Feature fq, const Mesh_data& P, const Mesh_data& Q)
+{
+  bool sharp = false;
+  for_each_crease_wedge(fp, fq, P, Q, [&](const std::array<Vec3<double>, 2>& w) {
+    const double cos_20 = 0.9396926207859084;
+    sharp = sharp || dot(w[0], w[1]) < cos_20 * std::sqrt(dot(w[0], w[0]) * dot(w[1], w[1]));
+  });
+  return sharp;
 }
 
 /// Hash key of a feature pair.

@@ -159,10 +159,11 @@ public:
 
   /// One level: the points of covering distance d, to emit(p, q, direction). Levels must
   /// come with decreasing d. `start` is when the input stage began (first level); `strips`:
-  /// how far the trim search follows narrow strips (trim_points.h).
+  /// how far the trim search follows narrow strips (trim_points.h); `creases`: which points
+  /// on the sum's creases are output beyond the covering's (decision.h).
   template <class Emit>
   void run_level(double d, Statistics& stats, Emit&& emit, Clock::time_point start,
-                 Strips strips = Strips::as_covering_needs)
+                 Strips strips = Strips::as_covering_needs, Creases creases = Creases::as_covering_needs)
   {
     const Mesh_data &mp = m_p, &mq = m_q;
     const Candidate_pairs& pairs = m_pairs;
@@ -246,6 +247,7 @@ public:
     context.use_cd_filter = bool(m_geometry);
     context.record_decisions = m_coarse_to_fine;
     context.keep_vertex_sums = m_o.keep_vertex_sums;
+    context.keep_sharp_creases = creases == Creases::sharp_kept;
     context.d = d;
     context.strips = strips;
     context.trim_points = m_o.use_trim_points;

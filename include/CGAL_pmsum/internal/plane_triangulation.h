@@ -54,14 +54,21 @@ struct Point_plane
   std::vector<std::size_t> points;
 };
 
+/// More planes of the points than their facets' normals: (point, outward normal) pairs, such
+/// as the two faces that meet at a point on a crease (crease_wedge()), of which a face
+/// narrower than the points' spacing may have no point of its own.
+using Crease_planes = std::vector<std::pair<std::size_t, CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>>;
+
 /// Groups `positions` by plane: one plane per distinct (normal, offset) of the points
-/// (`normals`: the normal of the convolution facet each point was decided on; equal within
-/// `tolerance`, relative to 1 for the normal and to `scale` for the offset); a point also
-/// joins the planes of the points within 2 d of it that it lies on (within tolerance *
-/// scale), and so on along crease rows (a point on a crease is on two faces or more).
+/// (`normals`: the normal of the convolution facet each point was decided on, and the normals
+/// of `more`; equal within `tolerance`, relative to 1 for the normal and to `scale` for the
+/// offset); a point also joins the planes of the points within 2 d of it that it lies on
+/// (within tolerance * scale), and so on along crease rows (a point on a crease is on two
+/// faces or more).
 inline std::vector<Point_plane>
 point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d)
+             const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+             const Crease_planes& more, double d)
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
   const double tolerance = 1e-9;
@@ -77,13 +84,13 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
   };
   std::map<Key, std::vector<std::size_t>> cells;
   std::vector<Point_plane> planes;
-  std::vector<std::size_t> plane_of(positions.size(), std::size_t(-1));
+  std::vector<std::vector<std::size_t>> joined(positions.size()); // planes of a point
   auto same = [&](const Point_plane& a, const Vector& n, double c) {
     return std::abs(a.normal.x() - n.x()) <= tolerance && std::abs(a.normal.y() - n.y()) <= tolerance &&
            std::abs(a.normal.z() - n.z()) <= tolerance && std::abs(a.offset - c) <= tolerance * scale;
   };
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Vector n = normals[i] / std::sqrt(normals[i].squared_length());
+  auto place = [&](std::size_t i, const Vector& normal) {
+    const Vector n = normal / std::sqrt(normal.squared_length());
     const double c = offset(i, n);
     const Key k = key(n, c);
     std::size_t found = std::size_t(-1);
@@ -100,9 +107,12 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
       planes.push_back(Point_plane{n, c, {}});
       cells[k].push_back(found);
     }
+    if (std::find(joined[i].begin(), joined[i].end(), found) != joined[i].end()) return;
     planes[found].points.push_back(i);
-    plane_of[i] = found;
-  }
+    joined[i].push_back(found);
+  };
+  for (std::size_t i = 0; i < positions.size(); ++i) place(i, normals[i]);
+  for (const auto& [i, n] : more) place(i, n);
   // The points join the planes of the points within two cells (2 d wide) of theirs that they
   // lie on, spreading along crease rows: a plane known near a point it joins is asked of the
   // points near that one (a face narrower than d may have points of its own only at its ends).
@@ -114,7 +124,6 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
   };
   std::map<Cell, std::vector<std::size_t>> near;     // cell -> planes of its points
   std::map<Cell, std::vector<std::size_t>> points_in; // cell -> its points
-  std::vector<std::vector<std::size_t>> joined(positions.size()); // planes of a point
   std::vector<Cell> changed;                         // cells whose planes were not yet asked around
   auto add_near = [&](const Cell& c, std::size_t j) {
     std::vector<std::size_t>& known = near[c];
@@ -123,9 +132,8 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
     changed.push_back(c);
   };
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    add_near(cell_of(i), plane_of[i]);
+    for (std::size_t j : joined[i]) add_near(cell_of(i), j);
     points_in[cell_of(i)].push_back(i);
-    joined[i].push_back(plane_of[i]);
   }
   while (!changed.empty()) {
     const Cell c = changed.back();
@@ -147,7 +155,7 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
   return planes;
 }
 
-/// The triangles of the planes of `positions` (point_planes()), oriented by the planes'
+/// The triangles of the planes of `positions` (point_planes(), with `more`), oriented by the planes'
 /// outward normals, that lie on the boundary: is_free_at(x) (x a double point) says whether
 /// the sum is free at x. Each plane's points are triangulated in the plane (constrained
 /// Delaunay, the crease rows as constraints); a triangle is kept when its centroid and a
@@ -160,8 +168,8 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
 template <class IsFreeAt>
 std::vector<std::array<std::size_t, 3>>
 plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals, double d,
-                IsFreeAt&& is_free_at, Face_cover& cover)
+                const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+                const Crease_planes& more, double d, IsFreeAt&& is_free_at, Face_cover& cover)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   struct Point_id { std::size_t i = std::size_t(-1); }; // none: a crossing of two crease rows
@@ -181,7 +189,7 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
   };
   auto coordinates = [](const K::Point_3& x) { return std::array<double, 3>{x.x(), x.y(), x.z()}; };
   std::vector<std::array<std::size_t, 3>> triangles;
-  const std::vector<Point_plane> planes = point_planes(positions, normals, d);
+  const std::vector<Point_plane> planes = point_planes(positions, normals, more, d);
   std::vector<std::vector<std::size_t>> planes_of(positions.size());
   for (std::size_t j = 0; j < planes.size(); ++j)
     for (std::size_t i : planes[j].points) planes_of[i].push_back(j);
