@@ -222,7 +222,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
       ms.refinements = level;
-      const bool split = ms.checks.valid() && splits_a_part(mesh, positions, part);
+      // (one outer shell: one volume, nothing to split)
+      const bool split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 &&
+                         splits_a_part(mesh, positions, part);
       if (ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl && !across) {
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
