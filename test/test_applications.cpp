@@ -689,6 +689,70 @@ TEST_CASE("orient_manifold_triangles: what CGAL's orient_polygon_soup and is_pol
 
 // The advancing front leaves holes on this box with a box-shaped void; plane by plane meshes
 // it (every point joins the planes it lies on, so the void's edges have their rows on both faces).
+TEST_CASE("crease_wedge: the normals where an edge and a vertex are both extreme, closed form", "[applications][mesh]")
+{
+  namespace in = CGAL::Pmsum::internal;
+  const Mesh P = to_mesh<Mesh>(octahedron(2)), Q = to_mesh<Mesh>(tetrahedron(1. / 128));
+  in::Mesh_descriptors<Mesh> dp, dq;
+  const in::Mesh_data a = in::make_mesh_data(P, get(CGAL::vertex_point, P), false, false, "P", dp);
+  const in::Mesh_data b = in::make_mesh_data(Q, get(CGAL::vertex_point, Q), false, false, "Q", dq);
+  auto vertex = [](const in::Mesh_data& m, std::array<double, 3> x) {
+    for (in::Index v = 0; v < m.number_of_vertices(); ++v)
+      if (m.points[v] == x) return v;
+    FAIL("no vertex");
+    return in::no_index;
+  };
+  auto edge = [&](std::array<double, 3> x, std::array<double, 3> y) {
+    const in::Index u = vertex(a, x), w = vertex(a, y);
+    for (in::Index e = 0; e < a.number_of_edges(); ++e)
+      if ((a.edges[e].v[0] == u && a.edges[e].v[1] == w) || (a.edges[e].v[0] == w && a.edges[e].v[1] == u)) return e;
+    FAIL("no edge");
+    return in::no_index;
+  };
+  const double t = 1. / 128;
+  // unit direction of a wedge end, sorted ends, to compare with closed forms
+  auto unit = [](in::Vec3<double> n) {
+    const double l = std::sqrt(in::dot(n, n));
+    return std::array<double, 3>{n[0] / l, n[1] / l, n[2] / l};
+  };
+  auto ends = [&](in::Index e, in::Index v) {
+    const auto w = in::crease_wedge(a, e, b, v);
+    std::vector<std::array<double, 3>> r;
+    if (w) r = {unit((*w)[0]), unit((*w)[1])};
+    std::sort(r.begin(), r.end());
+    return r;
+  };
+  auto near = [](const std::vector<std::array<double, 3>>& x, std::vector<std::array<double, 3>> y) {
+    std::sort(y.begin(), y.end());
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(x[i][c] - y[i][c]) > 1e-12) return false;
+    return true;
+  };
+  const double s3 = 1 / std::sqrt(3.), s2 = 1 / std::sqrt(2.);
+  // the edge from (0, 0, 2) to (0, -2, 0), normals (+-1, -1, 1)/sqrt 3: the vertex (0, 0, t) is
+  // extreme in both (the whole wedge: a crease of 70.5 degrees); (t, 0, 0) in (1, -1, 1) only
+  // (a point inside that face of the sum); the origin in neither
+  const in::Index e1 = edge({0, 0, 2}, {0, -2, 0});
+  CHECK(near(ends(e1, vertex(b, {0, 0, t})), {{s3, -s3, s3}, {-s3, -s3, s3}}));
+  CHECK(ends(e1, vertex(b, {t, 0, 0})).empty());
+  CHECK(ends(e1, vertex(b, {0, 0, 0})).empty());
+  // the edge from (-2, 0, 0) to (0, 0, -2), normals (-1, +-1, -1)/sqrt 3, with the origin: the
+  // half wedge down to (-1, 0, -1)/sqrt 2, the strip of that edge plus the tetrahedron's edge
+  // along y (35.3 degrees: sharp); with (0, t, 0) the other half
+  const in::Index e2 = edge({-2, 0, 0}, {0, 0, -2});
+  CHECK(near(ends(e2, vertex(b, {0, 0, 0})), {{-s3, -s3, -s3}, {-s2, 0, -s2}}));
+  CHECK(near(ends(e2, vertex(b, {0, t, 0})), {{-s2, 0, -s2}, {-s3, s3, -s3}}));
+  const in::Feature fe{1, e2}, fo{0, vertex(b, {0, 0, 0})}, fx{0, vertex(b, {t, 0, 0})};
+  CHECK(in::on_sharp_crease(fe, fo, a, b));
+  CHECK(in::on_sharp_crease(in::Feature{1, e1}, in::Feature{0, vertex(b, {0, 0, t})}, a, b));
+  CHECK_FALSE(in::on_sharp_crease(in::Feature{1, e1}, fx, a, b));
+  // a vertex sum at the end of a sharp crease: (0, 0, 2) + (0, 0, t)
+  CHECK(in::on_sharp_crease(in::Feature{0, vertex(a, {0, 0, 2})}, in::Feature{0, vertex(b, {0, 0, t})}, a, b));
+  CHECK_FALSE(in::on_sharp_crease(in::Feature{2, 0}, fo, a, b)); // a facet: no crease
+}
+
 TEST_CASE("mesh of a sharp convex sum at a coarse d: the refinement keeps the creases and corners",
           "[applications][mesh]")
 {
