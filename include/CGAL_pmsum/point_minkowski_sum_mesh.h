@@ -187,7 +187,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
       else normals.push_back(face_normals.back());
       if (!trim)
-        for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w) {
+        for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w, const Mesh_data&, Index) {
           for (const Vec3<double>& n : w) crease_planes.emplace_back(points.size() - 1, Epick::Vector_3(n[0], n[1], n[2]));
         });
     }, start, level == 0 ? Strips::as_covering_needs : Strips::followed,

@@ -158,16 +158,16 @@ inline std::optional<std::array<Vec3<double>, 2>> crease_wedge(const Mesh_data& 
   return std::array<Vec3<double>, 2>{at(lo), at(hi)};
 }
 
-/// Calls f(wedge) for each crease_wedge() of the sum of sample features fp of P and fq of Q:
-/// an edge and a vertex (one), or two vertices (every edge at either with the other vertex);
-/// none for features of higher dimensions.
+/// Calls f(wedge, E, e) for each crease_wedge() of the sum of sample features fp of P and fq
+/// of Q (e: the edge, of mesh E): an edge and a vertex (one), or two vertices (every edge at
+/// either with the other vertex); none for features of higher dimensions.
 template <class F>
 void for_each_crease_wedge(Feature fp, Feature fq, const Mesh_data& P, const Mesh_data& Q, F&& f)
 {
   if (fp.dimension + fq.dimension > 1) return;
   auto edges_and_vertex = [&](Feature a, Feature v, const Mesh_data& E, const Mesh_data& V) {
     auto one = [&](Index e) {
-      if (const auto w = crease_wedge(E, e, V, v.index)) f(*w);
+      if (const auto w = crease_wedge(E, e, V, v.index)) f(*w, E, e);
     };
     if (a.dimension == 1) one(a.index);
     else
@@ -177,14 +177,17 @@ void for_each_crease_wedge(Feature fp, Feature fq, const Mesh_data& P, const Mes
   if (fp.dimension == 0) edges_and_vertex(fq, fp, Q, P);
 }
 
-/// Is the sum of sample features fp of P and fq of Q on a sharp crease of the sum (a crease
-/// wedge wider than 20 degrees), or a vertex sum at an end of one?
+/// Is the sum of sample features fp of P and fq of Q on a crease of the sum along a sharp edge
+/// (its triangles' normals more than 20 degrees apart), or a vertex sum at an end of one? The
+/// edge's wedge, not the crease's: a strip of the edge plus an edge of the other mesh splits
+/// it into creases that may be far less sharp (one nearly flat), and both are needed.
 inline bool on_sharp_crease(Feature fp, Feature fq, const Mesh_data& P, const Mesh_data& Q)
 {
   bool sharp = false;
-  for_each_crease_wedge(fp, fq, P, Q, [&](const std::array<Vec3<double>, 2>& w) {
+  for_each_crease_wedge(fp, fq, P, Q, [&](const std::array<Vec3<double>, 2>&, const Mesh_data& E, Index e) {
+    const Vec3<double> a = E.triangle_normal<double>(E.edges[e].f[0]), b = E.triangle_normal<double>(E.edges[e].f[1]);
     const double cos_20 = 0.9396926207859084;
-    sharp = sharp || dot(w[0], w[1]) < cos_20 * std::sqrt(dot(w[0], w[0]) * dot(w[1], w[1]));
+    sharp = sharp || dot(a, b) < cos_20 * std::sqrt(dot(a, a) * dot(b, b));
   });
   return sharp;
 }
