@@ -34,6 +34,7 @@ std::string mesh_note(const CGAL::Pmsum::Mesh_statistics& ms)
   return "a mesh of " + std::to_string(ms.vertices) + " vertices and " + std::to_string(ms.triangles) + " triangles (" +
          std::to_string(ms.checks.shells) + " shells, " + std::to_string(ms.checks.void_shells) + " voids" +
          (ms.refinements ? ", d halved " + std::to_string(ms.refinements) + " times" : std::string()) +
+         (ms.crease_points ? ", the crease points kept" : "") +
          (ms.by_planes ? ", plane by plane" : "") + ")";
 }
 
@@ -44,7 +45,7 @@ Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
   const CGAL::Pmsum::Mesh_checks& c = ms.checks;
   Json j;
   j.integer("vertices", ms.vertices).integer("triangles", ms.triangles).num("covering_distance", ms.covering_distance)
-    .integer("refinements", std::size_t(ms.refinements)).boolean("by_planes", ms.by_planes).boolean("closed", c.closed).boolean("manifold", c.manifold)
+    .integer("refinements", std::size_t(ms.refinements)).boolean("crease_points", ms.crease_points).boolean("by_planes", ms.by_planes).boolean("closed", c.closed).boolean("manifold", c.manifold)
     .boolean("self_intersection_free", c.self_intersection_free).boolean("bounds_a_volume", c.bounds_a_volume)
     .integer("shells", c.shells).integer("void_shells", c.void_shells).num("point_distance", ms.point_distance)
     .num("boundary_to_mesh_bound", ms.boundary_to_mesh_bound());

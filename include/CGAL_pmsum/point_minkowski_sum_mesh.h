@@ -41,6 +41,8 @@ struct Mesh_statistics
   Statistics sum;              ///< the last point_minkowski_sum() run
   double covering_distance = 0;///< the `d` of that run (`d`, or smaller after refinements)
   int refinements = 0;         ///< how many times `d` was halved because a check failed
+  /// the points on the sum's sharp creases were kept (the first refinement)
+  bool crease_points = false;
   /// the mesh was made plane by plane: the advancing front's mesh of the same points was refused
   bool by_planes = false;
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
@@ -157,7 +159,8 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), the points' distance to the mesh); if a check
-/// fails, d is halved, twice at most, reusing the coarser decisions; then
+/// fails, d is halved, twice at most, at d/2 first with the points on sharp creases kept, then
+/// without (see `levels`), reusing the coarser decisions; then
 /// Mesh_reconstruction_failed, which says why each level was refused.
 /// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
 /// stage began. GT: the kernel in which the points are computed.
@@ -168,11 +171,18 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
   using Point = typename boost::property_traits<
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  const int max_refinements = 2;
+  // The levels: d, then d/2 keeping the points on sharp creases (they help a corner or a
+  // strip far narrower than d), then d/2 again without them (a hair smaller: coarse to fine
+  // needs a smaller d; rows of crease points beside the faces' rows may hurt the advancing
+  // front), then d/4.
+  struct Level { int halvings; Creases creases; bool again; };
+  const Level levels[] = {{0, Creases::as_covering_needs, false}, {1, Creases::sharp_kept, false},
+                          {1, Creases::as_covering_needs, true}, {2, Creases::as_covering_needs, false}};
   const Sum_parts parts(mp, mq);
   std::string failures;
-  for (int level = 0; level <= max_refinements; ++level) {
-    const double dl = d / double(1 << level);
+  for (const Level& level : levels) {
+    const bool creases = level.creases == Creases::sharp_kept;
+    const double dl = d / double(1 << level.halvings) * (level.again ? 1 - 1. / 1024 : 1);
     const auto t_sum = Clock::now();
     std::vector<Point> points;
     std::vector<Epick::Vector_3> normals, face_normals; // (face_normals: of a face through the point)
@@ -190,8 +200,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w, const Mesh_data&, Index) {
           for (const Vec3<double>& n : w) crease_planes.emplace_back(points.size() - 1, Epick::Vector_3(n[0], n[1], n[2]));
         });
-    }, start, level == 0 ? Strips::as_covering_needs : Strips::followed,
-       level == 0 ? Creases::as_covering_needs : Creases::sharp_kept);
+    }, start, level.halvings == 0 ? Strips::as_covering_needs : Strips::followed, level.creases);
     start = Clock::now();
     ms.sum = stats;
     ms.seconds_sum += seconds_since(t_sum);
@@ -221,7 +230,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                           (!no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover));
       ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
-      ms.refinements = level;
+      ms.refinements = level.halvings;
+      ms.crease_points = creases;
       // (one outer shell: one volume, nothing to split)
       const bool split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 &&
                          splits_a_part(mesh, positions, part);
@@ -232,6 +242,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         return;
       }
       failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
+                  (creases ? " with the crease points" : level.again ? " without them" : "") +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
                   (across ? "closed a hole over empty space" : level_failure(ms, split));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
@@ -256,8 +267,10 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// of the sum lies closer than `d'` to it (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
 /// planes of the sum's faces; `Mesh_statistics::by_planes`); if that fails too, the sum is
-/// recomputed at `d/2`, then `d/4` (with more trim points: the edges of every face strip
-/// narrower than d/2 followed to the strip's ends); if every one fails,
+/// recomputed at `d/2` keeping every point on a sharp crease of the sum
+/// (`Mesh_statistics::crease_points`), then at `d/2` without them, then `d/4` (with more trim
+/// points: the edges of every face strip narrower than d/2 followed to the strip's ends); if
+/// every one fails,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
 /// Proved: every point of the exact boundary is closer than `d' + e` to the mesh, `e` the

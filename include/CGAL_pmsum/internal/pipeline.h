@@ -293,7 +293,9 @@ public:
     stats.triangle_pairs = decided.filter.triangle_pairs;
     stats.containment_tests = decided.filter.containment_tests;
     stats.seconds_cd_filter = seconds_since(start);
-    m_output.swap(output);
+    // (a level with the crease points kept is a variant of the last one: the next level starts
+    // from the last one's points, as if it had not run)
+    if (creases == Creases::as_covering_needs) m_output.swap(output);
   }
 
 private:
