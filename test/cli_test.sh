@@ -352,9 +352,16 @@ expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work
 expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
 expect_fail 2 "trim and island points"   -- validate "$cube" "$tet" -d 0.2 --mesh --no-islands
 expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
-# a slab thinner than the points' spacing even after two refinements: an error, no file
+# a slab far thinner than the points' spacing: meshed plane by plane from the crease points of
+# the first refinement, within rounding of the exact box (validate: exit 0, within d both ways)
 printf 'OFF\n8 12 0\n0 0 0\n0 0 0.01\n0 2 0\n0 2 0.01\n2 0 0\n2 0 0.01\n2 2 0\n2 2 0.01\n3 0 1 3\n3 0 3 2\n3 4 6 7\n3 4 7 5\n3 0 4 5\n3 0 5 1\n3 2 3 7\n3 2 7 6\n3 0 2 6\n3 0 6 4\n3 1 5 7\n3 1 7 3\n' > "$work/slab.off"
-expect_fail 6 "no valid mesh"            -- mesh "$work/slab.off" "$tet" --scale-q 0.01 -d 0.5 -o "$work/out.off" --quiet
+"$pmsum" validate "$work/slab.off" "$tet" --scale-q 0.01 -d 0.5 --mesh > "$work/slab.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/slab.txt" && grep -q "plane by plane" "$work/slab.txt"
+then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
+# grate-a (bars that touch) + a tetrahedron a thousandth of its size at d = 10%: no valid mesh
+# at any level: an error, no file
+"$pmsum" generate grate-a -o "$work/grate-a.off" && ok || ko "generate grate-a"
+expect_fail 6 "no valid mesh"            -- mesh "$work/grate-a.off" "$tet" --scale-q 0.001 -d 0.1 --relative -o "$work/out.off" --quiet
 expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 -o "$work/missing/out.ply"
 expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 -o "$work/out.ply" --json "$work/missing/out.json"
 expect_fail 1 "no such directory"            -- sum "$cube" "$tet" -d 0.2 --levels 0.4 -o "$work/missing/out.ply"
