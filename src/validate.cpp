@@ -193,7 +193,8 @@ int command_validate(int argc, char** argv)
     }
     mesh_ok = mesh_error.empty() && ms.checks.valid() && ms.checks.shells == coverage.size() &&
               ms.checks.void_shells == voids && distance.mesh_to_surface < in.d && distance.surface_to_mesh < in.d &&
-              distance.surface_to_mesh < ms.boundary_to_mesh_bound(); // the proved bound, checked
+              distance.surface_to_mesh < ms.boundary_to_mesh_bound() && // the proved bounds, checked
+              distance.mesh_to_surface < ms.mesh_to_boundary_bound;
   }
   const bool ok = off_boundary == 0 && covered == coverage.size() && mesh_ok;
 
@@ -222,7 +223,8 @@ int command_validate(int argc, char** argv)
                 << voids << ")\n"
                 << "  mesh distance     mesh to exact " << distance.mesh_to_surface / in.d << " d, exact to mesh "
                 << distance.surface_to_mesh / in.d << " d (proved below " << ms.boundary_to_mesh_bound() / in.d
-                << " d: output points within " << ms.point_distance / in.d << " d of the mesh)\n";
+                << " d: output points within " << ms.point_distance / in.d << " d of the mesh; mesh within "
+                << ms.mesh_to_boundary_bound / in.d << " d of the output points)\n";
     std::cout << "  mesh seconds      " << mesh_seconds << " (sum " << ms.seconds_sum << ", reconstruction "
               << ms.seconds_mesh << "), Nef ratio " << (mesh_seconds > 0 ? ref->seconds() / mesh_seconds : 0) << "\n";
   }

@@ -519,6 +519,8 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   }
   CHECK(worst_vertex < 1e-12);
   CHECK(worst < d);
+  CHECK(ms.mesh_to_boundary_bound < ms.covering_distance); // the bound the mesh was checked with, proved
+  CHECK(worst <= ms.mesh_to_boundary_bound);
   // the volume of the mesh is the box's, within the error of cutting its edges by chords
   CHECK(std::abs(CGAL::Polygon_mesh_processing::volume(m) - 1.5 * 1.25 * 1.5) < 0.05);
 }
@@ -587,6 +589,41 @@ TEST_CASE("largest_distance_to_mesh: 0 at vertices, the distance to the nearest 
   CHECK(largest_distance_to_mesh(corners, unit) == Approx(0.375).margin(1e-12));
   CHECK(largest_distance_to_mesh(corners, unit) >= 0.375); // with its rounding margin
   CHECK(largest_distance_to_mesh(corners, Mesh()) == std::numeric_limits<double>::infinity());
+}
+
+TEST_CASE("mesh_distance_bound: the largest distance from a mesh to points, bounded from above, closed form",
+          "[applications][mesh]")
+{
+  using CGAL::Pmsum::internal::corner_covering_radius;
+  using CGAL::Pmsum::internal::mesh_distance_bound;
+  // the farthest point of a triangle from its corners: the circumcentre, or on the longest side
+  CHECK(corner_covering_radius({0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.) / 2, 0}) == Approx(1 / std::sqrt(3.)));
+  CHECK(corner_covering_radius({0, 0, 0}, {1, 0, 0}, {0, 1, 0}) == Approx(std::sqrt(2.) / 2));
+  // obtuse at (2, 1): the bisector of (0, 0)-(2, 1) meets the x axis at 1.25, 1.25 from both
+  CHECK(corner_covering_radius({0, 0, 0}, {4, 0, 0}, {2, 1, 0}) == Approx(1.25));
+  CHECK(corner_covering_radius({2, 1, 0}, {0, 0, 0}, {4, 0, 0}) == Approx(1.25));
+  CHECK(corner_covering_radius({0, 0, 0}, {3, 0, 0}, {1, 0, 0}) == Approx(1)); // flat: half the longer piece
+  // the unit cube's surface and its corners: the faces' centres are sqrt(2)/2 from them
+  const Mesh unit = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  std::vector<IK::Point_3> points;
+  for (auto v : unit.vertices()) points.push_back(unit.point(v));
+  const double half_diagonal = std::sqrt(2.) / 2;
+  const double b = mesh_distance_bound(unit, points, 0.75);
+  CHECK(b >= half_diagonal);
+  CHECK(b < 0.75);
+  CHECK(mesh_distance_bound(unit, points, 0.7) >= 0.7); // cannot be shown below the true distance
+  // with the faces' centres too: 0.5 (the edges' midpoints), which the triangles'
+  // corners alone (sqrt(2)/2 apart) cannot show: the triangles are split
+  for (int k = 0; k < 3; ++k)
+    for (double side : {0., 1.}) {
+      double c[3] = {0.5, 0.5, 0.5};
+      c[k] = side;
+      points.emplace_back(c[0], c[1], c[2]);
+    }
+  const double with_centres = mesh_distance_bound(unit, points, 0.55);
+  CHECK(with_centres >= 0.5);
+  CHECK(with_centres < 0.55);
+  CHECK(mesh_distance_bound(Mesh(), points, 0.1) == 0);
 }
 
 TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", "[applications][mesh]")
@@ -796,6 +833,8 @@ TEST_CASE("mesh of a sharp convex sum at a coarse d: the refinement keeps the cr
     const auto dist = CGAL::Pmsum::measure_mesh_distance({CGAL::Pmsum::internal::to_shell(hull)}, m, d / 8);
     CHECK(dist.mesh_to_surface < d);
     CHECK(dist.surface_to_mesh < d);
+    CHECK(dist.mesh_to_surface <= ms.mesh_to_boundary_bound); // the proved bounds
+    CHECK(dist.surface_to_mesh <= ms.boundary_to_mesh_bound());
   }
 }
 

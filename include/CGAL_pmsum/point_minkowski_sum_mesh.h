@@ -17,6 +17,10 @@
 // d + e to the mesh, e the largest distance from an output point to the mesh (0 when every
 // point is a vertex). A reconstruction that drops the points of a part of the boundary (the
 // walls of a narrow passage, say) may still be a valid mesh, of the wrong shape: e tells.
+// And the mesh must stay near the points: they lie on the exact boundary, so a mesh whose
+// every point is closer than d to one (mesh_distance_bound()) is closer than d to the boundary.
+// A valid mesh can fail it: a triangle cutting deep across a sharp corner, or closing a hole
+// over a part of the boundary whose points it left out.
 
 #ifndef CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
 #define CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
@@ -51,6 +55,10 @@ struct Mesh_statistics
   /// the largest distance from an output point of the last run to the mesh (0 if every
   /// point is a vertex; infinity if the mesh failed a check)
   double point_distance = 0;
+  /// a proved bound: every point of the mesh is closer than this to an output point of the
+  /// last run, hence to the exact boundary (below `covering_distance`; infinity if the mesh
+  /// failed a check)
+  double mesh_to_boundary_bound = 0;
   /// \returns a proved bound: every point of the exact boundary is closer than this to the
   /// mesh (`covering_distance + point_distance`)
   double boundary_to_mesh_bound() const { return covering_distance + point_distance; }
@@ -132,8 +140,10 @@ inline std::string level_failure(const Mesh_statistics& ms, bool split)
   if (split)
     return "split a connected part of the sum (a solid of P plus one of Q) into " +
            std::to_string(ms.checks.shells - ms.checks.void_shells) + " outer shells";
-  return "left output points up to " + std::to_string(ms.point_distance / ms.covering_distance) +
-         " times that d from the mesh (a part of the boundary missing)";
+  if (ms.point_distance >= ms.covering_distance)
+    return "left output points up to " + std::to_string(ms.point_distance / ms.covering_distance) +
+           " times that d from the mesh (a part of the boundary missing)";
+  return "had triangles that could not be shown closer than that d to the output points (cutting across the boundary)";
 }
 
 /// The start of every mesh function: checks the parameters that a mesh refuses (it meshes the
@@ -158,8 +168,9 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
-/// no connected part of the sum split (splits_a_part()), the points' distance to the mesh); if a check
-/// fails, d is halved, twice at most, at d/2 first with the points on sharp creases kept, then
+/// no connected part of the sum split (splits_a_part()), the points' distance to the mesh and the
+/// mesh's to the points (mesh_distance_bound())); if a check fails, d is halved, twice at
+/// most, at d/2 first with the points on sharp creases kept, then
 /// without (see `levels`), reusing the coarser decisions; then
 /// Mesh_reconstruction_failed, which says why each level was refused.
 /// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
@@ -225,6 +236,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                             : std::numeric_limits<double>::infinity();
+      ms.mesh_to_boundary_bound = ms.checks.valid() ? mesh_distance_bound(mesh, points, dl)
+                                                    : std::numeric_limits<double>::infinity();
       // Plane by plane, the holes left are closed by fill_holes(): never over empty space.
       const bool across = cd && ms.checks.valid() &&
                           (!no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover));
@@ -235,7 +248,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // (one outer shell: one volume, nothing to split)
       const bool split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 &&
                          splits_a_part(mesh, positions, part);
-      if (ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl && !across) {
+      if (ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
+          ms.mesh_to_boundary_bound < dl && !across) {
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
         ms.by_planes = way == 1;
@@ -263,8 +277,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// bounds a volume (outer shells outward, voids inward), it never splits a connected part of
 /// the sum (the sum of a solid of `P` and a solid of `Q`, components that touch and a void with
 /// its container counting as one solid: the output points of such a part all lie on one
-/// outer shell and its voids), and every output point
-/// of the sum lies closer than `d'` to it (`d'` the covering distance used): if the
+/// outer shell and its voids), every output point
+/// of the sum lies closer than `d'` to it and every point of it closer than `d'` to an output
+/// point (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
 /// planes of the sum's faces; `Mesh_statistics::by_planes`); if that fails too, the sum is
 /// recomputed at `d/2` keeping every point on a sharp crease of the sum
@@ -276,8 +291,10 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// Proved: every point of the exact boundary is closer than `d' + e` to the mesh, `e` the
 /// largest distance from an output point to the mesh (`Mesh_statistics::point_distance`,
 /// below `d'`; 0 when every point is a vertex), since the points cover the boundary
-/// within `d'`. Measured, not proved: the distance from the mesh to the exact boundary, the
-/// distance the other way (usually well below the bound), and the mesh's shells against the
+/// within `d'`; and every point of the mesh is closer than `Mesh_statistics::mesh_to_boundary_bound`
+/// (below `d'`) to an output point, hence to the exact boundary (a mesh for which that bound
+/// cannot be shown below `d'` is refused like one failing a check). Measured, not proved: the
+/// actual distances both ways (usually well below the bounds), and the mesh's shells against the
 /// exact boundary's (`pmsum validate --mesh`, `benchmark/mesh/results/results.md`).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`

@@ -18,7 +18,8 @@ namespace CGAL {
 /// (exactly on the boundary of the swept volume): closed, 2-manifold, outward oriented and
 /// free of self-intersections, refined as point_minkowski_sum_mesh() does, or
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown. Every point of the exact boundary is
-/// closer than `Mesh_statistics::boundary_to_mesh_bound()` to the mesh.
+/// closer than `Mesh_statistics::boundary_to_mesh_bound()` to the mesh, and every point of the
+/// mesh closer than `Mesh_statistics::mesh_to_boundary_bound` to the exact boundary.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 /// \tparam PolygonMesh a model of `FaceListGraph`

@@ -40,6 +40,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <set>
 #include <thread>
 #include <unordered_map>
@@ -374,6 +375,82 @@ double largest_distance_to_mesh(const std::vector<Point>& points, const Triangle
     }
   });
   return e > 0 ? e + 256 * std::numeric_limits<double>::epsilon() * scale : e;
+}
+
+/// The largest distance from a point of the triangle abc to the nearest of its corners: the
+/// circumradius if no angle is obtuse; else, with the obtuse angle at c, the larger distance
+/// from a or b to where the perpendicular bisector of its side with c meets ab.
+inline double corner_covering_radius(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                     const std::array<double, 3>& c)
+{
+  auto sq = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
+    return (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) + (u[2] - v[2]) * (u[2] - v[2]);
+  };
+  // squared sides, the longest (opposite the largest angle) as s2
+  std::array<double, 3> s = {sq(b, c), sq(c, a), sq(a, b)};
+  std::sort(s.begin(), s.end());
+  const double s0 = s[0], s1 = s[1], s2 = s[2];
+  if (s2 <= s0 + s1) { // no obtuse angle: the circumradius, from 16 area^2 (Heron)
+    const double area16 = 4 * s0 * s1 - (s0 + s1 - s2) * (s0 + s1 - s2);
+    return area16 > 0 ? std::sqrt(s0 * s1 * s2 / area16) : std::sqrt(s2) / 2;
+  }
+  // obtuse: from the corner between sides 1 and 2 (angle opposite side 0), along side 2, to
+  // the bisector of side 1: side1 / (2 cos), cos = (s1 + s2 - s0) / (2 sqrt(s1 s2)); alike for side 0
+  return (std::max)(s1 * std::sqrt(s2) / (s1 + s2 - s0), s0 * std::sqrt(s2) / (s0 + s2 - s1));
+}
+
+/// A bound of the largest distance from a point of `mesh` to the nearest of `points`, made
+/// below `limit` where it can be: each triangle, split in four as long as needed (six times
+/// at most), is closer than (largest distance from a corner to the points) + (its
+/// corner_covering_radius()) to them. Returns the largest bound (0 for a mesh without
+/// triangles), or a value >= `limit` as soon as a triangle's cannot be brought below it.
+/// The mesh's vertices being points, a triangle needs no split and no search while its
+/// corner covering radius is below `limit`. With a margin of 256 units in the last place of
+/// the largest coordinate, for the rounding (as largest_distance_to_mesh()).
+template <class Point, class TriangleMesh>
+double mesh_distance_bound(const TriangleMesh& mesh, const std::vector<Point>& points, double limit)
+{
+  using V = std::array<double, 3>;
+  const Shell s = to_shell(mesh);
+  double scale = 0;
+  for (const V& p : s.points) scale = (std::max)({scale, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+  const double margin = 256 * std::numeric_limits<double>::epsilon() * scale;
+  std::optional<Point_search> search; // built on the first triangle that needs it
+  auto distance = [&](const V& x) {
+    if (!search) search.emplace(points);
+    if (search->points.empty()) return std::numeric_limits<double>::infinity();
+    const Point_search::Search nearest(search->tree, Point_search::K::Point_3(x[0], x[1], x[2]), 1);
+    return std::sqrt(nearest.begin()->second);
+  };
+  std::vector<double> at_vertex(s.points.size(), -1); // -1: not searched yet
+  auto vertex_distance = [&](std::size_t v) {
+    if (at_vertex[v] < 0) at_vertex[v] = distance(s.points[v]);
+    return at_vertex[v];
+  };
+  auto mid = [](const V& u, const V& v) { return V{(u[0] + v[0]) / 2, (u[1] + v[1]) / 2, (u[2] + v[2]) / 2}; };
+  // the bound of triangle t with its corners' distances e, split `depth` more times at most
+  std::function<double(const std::array<V, 3>&, const std::array<double, 3>&, int)> bound =
+    [&](const std::array<V, 3>& t, const std::array<double, 3>& e, int depth) {
+      const double corners = (std::max)({e[0], e[1], e[2]}) + margin;
+      const double b = corners + corner_covering_radius(t[0], t[1], t[2]);
+      if (b < limit || corners >= limit || depth == 0) return b;
+      const std::array<V, 3> m = {mid(t[1], t[2]), mid(t[2], t[0]), mid(t[0], t[1])};
+      const std::array<double, 3> em = {distance(m[0]), distance(m[1]), distance(m[2])};
+      double worst = bound({m[0], m[1], m[2]}, em, depth - 1);
+      for (int i = 0; i < 3 && worst < limit; ++i)
+        worst = (std::max)(worst, bound({t[i], m[(i + 2) % 3], m[(i + 1) % 3]}, {e[i], em[(i + 2) % 3], em[(i + 1) % 3]},
+                                        depth - 1));
+      return worst;
+    };
+  double worst = 0;
+  for (const auto& tri : s.triangles) {
+    const std::array<V, 3> t = {s.points[tri[0]], s.points[tri[1]], s.points[tri[2]]};
+    const double r = corner_covering_radius(t[0], t[1], t[2]) + margin;
+    const double b = r < limit ? r : bound(t, {vertex_distance(tri[0]), vertex_distance(tri[1]), vertex_distance(tri[2])}, 6);
+    worst = (std::max)(worst, b);
+    if (worst >= limit) break;
+  }
+  return worst;
 }
 
 } // namespace internal
