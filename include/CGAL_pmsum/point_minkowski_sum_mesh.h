@@ -76,18 +76,15 @@ namespace internal {
 class Sum_parts
 {
 public:
-  Sum_parts(const Mesh_data& mp, const Mesh_data& mq) : m_p(solids(mp)), m_q(solids(mq)) {}
+  Sum_parts(const Mesh_data& mp, const Mesh_data& mq)
+    : m_p(Solid_checker(mp).solids()), m_q(Solid_checker(mq).solids())
+  {}
 
   /// The part of the output point of samples sp of P and sq of Q.
   std::size_t of(const Mesh_data& mp, const Mesh_data& mq, const Sample& sp, const Sample& sq) const
   { return std::size_t(m_p[component(mp, sp)]) * m_q.size() + m_q[component(mq, sq)]; }
 
 private:
-  static std::vector<Index> solids(const Mesh_data& m)
-  {
-    const std::string name; // (names only errors, which solids() does not report)
-    return Solid_checker(m, name).solids();
-  }
   static Index component(const Mesh_data& m, const Sample& s)
   {
     for (int i = 0; i < 3; ++i)
@@ -106,25 +103,14 @@ bool splits_a_part(const TriangleMesh& mesh, const std::vector<CGAL::Exact_predi
                    const std::vector<std::size_t>& part)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  using Key = std::array<double, 3>;
-  struct Hash
-  {
-    std::size_t operator()(const Key& k) const
-    {
-      std::size_t h = 0;
-      for (double c : k) h = h * 1000003u ^ std::hash<double>()(c);
-      return h;
-    }
-  };
-  std::unordered_map<Key, std::size_t, Hash> part_at;
+  std::unordered_map<Position, std::size_t, Position_hash> part_at;
   for (std::size_t i = 0; i < positions.size(); ++i)
-    part_at.emplace(Key{positions[i].x(), positions[i].y(), positions[i].z()}, part[i]);
+    part_at.emplace(position(positions[i]), part[i]);
   auto volume_id = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   if (PMP::volume_connected_components(mesh, volume_id) < 2) return false;
   std::unordered_map<std::size_t, std::size_t> volume_of; // part -> volume
   for (auto v : vertices(mesh)) {
-    const auto& p = get(CGAL::vertex_point, mesh, v);
-    const auto it = part_at.find(Key{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    const auto it = part_at.find(position(get(CGAL::vertex_point, mesh, v)));
     if (it == part_at.end()) continue;
     const std::size_t volume = get(volume_id, face(halfedge(v, mesh), mesh));
     if (volume_of.emplace(it->second, volume).first->second != volume) return true;

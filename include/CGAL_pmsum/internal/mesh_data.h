@@ -35,6 +35,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
@@ -199,8 +200,9 @@ class Solid_checker
 public:
   using P3 = std::array<double, 3>;
 
-  Solid_checker(const Mesh_data& m, const std::string& name)
-    : m(m), name(name), m_triangles(m.components.size()), m_vertices(m.components.size())
+  /// `name` names the mesh in the errors (solids() reports none).
+  explicit Solid_checker(const Mesh_data& m, std::string name = "the mesh")
+    : m(m), name(std::move(name)), m_triangles(m.components.size()), m_vertices(m.components.size())
   {
     for (Index t = 0; t < m.number_of_triangles(); ++t) m_triangles[m.triangle_component[t]].push_back(t);
     for (Index v = 0; v < m.number_of_vertices(); ++v)
@@ -534,7 +536,7 @@ private:
   }
 
   const Mesh_data& m;
-  const std::string& name;
+  const std::string name;
   std::vector<std::vector<Index>> m_triangles, m_vertices; // of each component
 };
 

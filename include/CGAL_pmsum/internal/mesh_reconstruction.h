@@ -44,6 +44,7 @@
 #include <set>
 #include <thread>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <limits>
 #include <optional>
@@ -359,20 +360,44 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points,
   return c;
 }
 
+/// A position rounded to doubles, as a key of the points at the mesh's vertices.
+using Position = std::array<double, 3>;
+struct Position_hash
+{
+  std::size_t operator()(const Position& k) const
+  {
+    std::size_t h = 0;
+    for (double c : k) h = h * 1000003u ^ std::hash<double>()(c);
+    return h;
+  }
+};
+template <class Point>
+Position position(const Point& p)
+{
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+
 /// The largest distance from `points` to the triangles of `mesh` (0 if every point is a
 /// vertex; infinity if the mesh has no triangle), plus a margin of 256 units in the last
 /// place of the largest coordinate if not 0, for the rounding of the positions (to doubles,
-/// alike for both) and of the distance.
+/// alike for both) and of the distance. Only the points at no vertex are searched for.
 template <class Point, class TriangleMesh>
 double largest_distance_to_mesh(const std::vector<Point>& points, const TriangleMesh& mesh)
 {
+  if (faces(mesh).empty()) return std::numeric_limits<double>::infinity();
+  std::unordered_set<Position, Position_hash> at_vertex;
+  for (auto v : vertices(mesh)) at_vertex.insert(position(get(CGAL::vertex_point, mesh, v)));
+  std::vector<Point_search::K::Point_3> away;
   double scale = 0;
+  for (const Point& p : points) {
+    const Position x = position(p);
+    if (at_vertex.count(x)) continue;
+    away.emplace_back(x[0], x[1], x[2]);
+    scale = (std::max)({scale, std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
+  }
+  if (away.empty()) return 0;
   const double e = largest_distance_to({to_shell(mesh)}, [&](const auto& f) {
-    for (const Point& p : points) {
-      const Point_search::K::Point_3 x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-      scale = (std::max)({scale, std::abs(x.x()), std::abs(x.y()), std::abs(x.z())});
-      f(x);
-    }
+    for (const auto& x : away) f(x);
   });
   return e > 0 ? e + 256 * std::numeric_limits<double>::epsilon() * scale : e;
 }
