@@ -358,6 +358,14 @@ printf 'OFF\n8 12 0\n0 0 0\n0 0 0.01\n0 2 0\n0 2 0.01\n2 0 0\n2 0 0.01\n2 2 0\n2
 "$pmsum" validate "$work/slab.off" "$tet" --scale-q 0.01 -d 0.5 --mesh > "$work/slab.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/slab.txt" && grep -q "plane by plane" "$work/slab.txt"
 then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
+# tripod + an octahedron a thousandth of its size at d = 2%: the advancing front once made a mesh
+# that passed every check of the mesh itself with triangles 5 d long across a concave corner, 1.7 d
+# from the exact boundary; now such triangles are refused: a mesh within d of Nef's boundary both
+# ways, one shell, within the proved bounds (validate: exit 0)
+"$pmsum" validate "$data/tripod.off" "$data/octahedron.off" --scale-q 0.001 -d 0.02 --relative --mesh --quiet \
+  > "$work/tripod.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/tripod.txt"; then ok
+else ko "tripod + tiny octahedron: a mesh within d of the boundary"; cat "$work/tripod.txt"; fi
 # grate-a (bars that touch) + a tetrahedron a thousandth of its size at d = 10%: no valid mesh
 # at any level: an error, no file
 "$pmsum" generate grate-a -o "$work/grate-a.off" && ok || ko "generate grate-a"

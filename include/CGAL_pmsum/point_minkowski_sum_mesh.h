@@ -213,7 +213,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       std::optional<Face_cover> cover;
       auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
-        triangles = advancing_front_triangles(positions, normals);
+        triangles = advancing_front_triangles(positions, normals, dl);
       } else {
         cd.emplace(geometry);
         cover.emplace(pipeline.pairs(), mp, mq);

@@ -11,6 +11,9 @@
 // passage, or the outside of a shell to a void: points close together on surfaces that face
 // away from each other. The normal of a point inside a convolution facet is the facet's; on a
 // convolution edge or vertex (a possible crease or corner) it is not unique and not used.
+// A triangle with a point d or farther from its three corners is refused too: it could not be
+// shown within d of the points (mesh_distance_bound()), and such triangles bridge concave
+// corners, where the crease points carry no normal.
 // The reconstruction leaves holes at sharp corners, and along the rims of parts thinner than
 // about three times the point spacing: they are closed by triangulating each hole's border.
 // Where a filled hole crosses the triangles beside it, those are cut away with their
@@ -54,6 +57,28 @@ namespace CGAL {
 namespace Pmsum {
 namespace internal {
 
+/// The largest distance from a point of the triangle abc to the nearest of its corners: the
+/// circumradius if no angle is obtuse; else, with the obtuse angle at c, the larger distance
+/// from a or b to where the perpendicular bisector of its side with c meets ab.
+inline double corner_covering_radius(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                     const std::array<double, 3>& c)
+{
+  auto sq = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
+    return (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) + (u[2] - v[2]) * (u[2] - v[2]);
+  };
+  // squared sides, the longest (opposite the largest angle) as s2
+  std::array<double, 3> s = {sq(b, c), sq(c, a), sq(a, b)};
+  std::sort(s.begin(), s.end());
+  const double s0 = s[0], s1 = s[1], s2 = s[2];
+  if (s2 <= s0 + s1) { // no obtuse angle: the circumradius, from 16 area^2 (Heron)
+    const double area16 = 4 * s0 * s1 - (s0 + s1 - s2) * (s0 + s1 - s2);
+    return area16 > 0 ? std::sqrt(s0 * s1 * s2 / area16) : std::sqrt(s2) / 2;
+  }
+  // obtuse: from the corner between sides 1 and 2 (angle opposite side 0), along side 2, to
+  // the bisector of side 1: side1 / (2 cos), cos = (s1 + s2 - s0) / (2 sqrt(s1 s2)); alike for side 0
+  return (std::max)(s1 * std::sqrt(s2) / (s1 + s2 - s0), s0 * std::sqrt(s2) / (s0 + s2 - s1));
+}
+
 /// Priority of the advancing front: CGAL's default (the radius of the smallest Delaunay
 /// sphere through the triangle), but infinity (refused) for a triangle that makes an angle of
 /// more than 80 degrees with a vertex normal (the triangle oriented by the sum of its vertex
@@ -66,6 +91,7 @@ struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
   const std::vector<Vector>* normals;
+  double d; // the covering distance of the points
 
   template <class AdvancingFront, class Cell_handle>
   double operator()(const AdvancingFront& adv, Cell_handle& c, const int& index) const
@@ -79,6 +105,8 @@ struct Normal_consistent_priority
       v[k] = c->vertex((index + k + 1) & 3);
       n[k] = (*normals)[v[k]->id()];
     }
+    auto at = [&](int k) { return std::array<double, 3>{v[k]->point().x(), v[k]->point().y(), v[k]->point().z()}; };
+    if (corner_covering_radius(at(0), at(1), at(2)) >= d) return std::numeric_limits<double>::infinity();
     Vector t = CGAL::cross_product(v[1]->point() - v[0]->point(), v[2]->point() - v[0]->point());
     if (t * (n[0] + n[1] + n[2]) < 0) t = -t;
     const double length = std::sqrt(t.squared_length());
@@ -219,12 +247,13 @@ std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> double
 /// their unit outward `normals` (Normal_consistent_priority).
 inline std::vector<std::array<std::size_t, 3>>
 advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
-                          const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals)
+                          const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+                          double d)
 {
   std::vector<std::array<std::size_t, 3>> triangles;
   on_own_thread([&] {
     CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
-                                                 Normal_consistent_priority{&normals});
+                                                 Normal_consistent_priority{&normals, d});
   });
   return triangles;
 }
@@ -400,28 +429,6 @@ double largest_distance_to_mesh(const std::vector<Point>& points, const Triangle
     for (const auto& x : away) f(x);
   });
   return e > 0 ? e + 256 * std::numeric_limits<double>::epsilon() * scale : e;
-}
-
-/// The largest distance from a point of the triangle abc to the nearest of its corners: the
-/// circumradius if no angle is obtuse; else, with the obtuse angle at c, the larger distance
-/// from a or b to where the perpendicular bisector of its side with c meets ab.
-inline double corner_covering_radius(const std::array<double, 3>& a, const std::array<double, 3>& b,
-                                     const std::array<double, 3>& c)
-{
-  auto sq = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
-    return (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) + (u[2] - v[2]) * (u[2] - v[2]);
-  };
-  // squared sides, the longest (opposite the largest angle) as s2
-  std::array<double, 3> s = {sq(b, c), sq(c, a), sq(a, b)};
-  std::sort(s.begin(), s.end());
-  const double s0 = s[0], s1 = s[1], s2 = s[2];
-  if (s2 <= s0 + s1) { // no obtuse angle: the circumradius, from 16 area^2 (Heron)
-    const double area16 = 4 * s0 * s1 - (s0 + s1 - s2) * (s0 + s1 - s2);
-    return area16 > 0 ? std::sqrt(s0 * s1 * s2 / area16) : std::sqrt(s2) / 2;
-  }
-  // obtuse: from the corner between sides 1 and 2 (angle opposite side 0), along side 2, to
-  // the bisector of side 1: side1 / (2 cos), cos = (s1 + s2 - s0) / (2 sqrt(s1 s2)); alike for side 0
-  return (std::max)(s1 * std::sqrt(s2) / (s1 + s2 - s0), s0 * std::sqrt(s2) / (s0 + s2 - s1));
 }
 
 /// A bound of the largest distance from a point of `mesh` to the nearest of `points`, made
