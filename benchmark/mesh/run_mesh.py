@@ -150,13 +150,15 @@ def main():
                   "Checks: closed, manifold, free of self-intersections (CGAL's `does_self_intersect`), bounding "
                   "a volume. Shells: the mesh's (voids) / the exact boundary's. Distances: Hausdorff, both ways, "
                   "between the mesh and the exact Nef boundary, measured at lattice samples of spacing d/8 on both, "
-                  "divided by d. Mesh s: the whole mesh (sum, reconstruction, checks), as `pmsum mesh` runs it. "
+                  "divided by d; in parentheses the bounds `pmsum mesh` proves and checks before it returns the mesh "
+                  "(`mesh_to_boundary_bound`: every point of the mesh is closer than this to an output point; "
+                  "`boundary_to_mesh_bound`: every point of the exact boundary is closer than this to the mesh). Mesh s: the whole mesh (sum, reconstruction, checks), as `pmsum mesh` runs it. "
                   "Nef s: `CGAL::minkowski_sum_3`, one thread. Manifold s: Manifold "
                   f"{manifold_minkowski.VERSION}'s `minkowskiSum` (npm manifold-3d, WebAssembly in node, one "
                   f"thread, float32 input), the sum alone (no reading, no checks); > {MANIFOLD_TIMEOUT}: stopped then; – where "
                   "it failed.\n\n")
         out.write("| pair | d | d used | vertices | triangles | checks | shells (voids) mesh / exact | "
-                  "mesh→exact / d | exact→mesh / d | sum s | reconstruction s | mesh s | Nef s | Nef / mesh | "
+                  "mesh→exact / d (proved <) | exact→mesh / d (proved <) | sum s | reconstruction s | mesh s | Nef s | Nef / mesh | "
                   "Manifold s | Manifold / mesh | ok |\n"
                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for name, rep in rows:
@@ -175,12 +177,15 @@ def main():
                           f"{rep['shells']} ({rep['void_shells']}) | | | {s['mesh_sum']:.2f} | "
                           f"{s['mesh_reconstruction']:.2f} | {s['mesh']:.2f} | {nef:.2f} | | {man_cols} | no |\n")
                 continue
+            def bound(key):  # (rows saved before the bound was reported have none)
+                return f"(< {m[key] / rep['d']:.2f})" if key in m else "(–)"
             checks = "valid" if m["closed"] and m["manifold"] and m["self_intersection_free"] and m["bounds_a_volume"] \
                 else "INVALID"
             out.write(f"| {name} | {rep['d_argument']} | {m['covering_distance'] / rep['sum_bbox_diagonal']:.3g} | "
                       f"{m['vertices']} | {m['triangles']} | {checks} | {m['shells']} ({m['void_shells']}) / "
-                      f"{rep['shells']} ({rep['void_shells']}) | {m['mesh_to_exact_over_d']:.2f} | "
-                      f"{m['exact_to_mesh_over_d']:.2f} | {s['mesh_sum']:.2f} | {s['mesh_reconstruction']:.2f} | "
+                      f"{rep['shells']} ({rep['void_shells']}) | {m['mesh_to_exact_over_d']:.2f} "
+                      f"{bound('mesh_to_boundary_bound')} | {m['exact_to_mesh_over_d']:.2f} "
+                      f"{bound('boundary_to_mesh_bound')} | {s['mesh_sum']:.2f} | {s['mesh_reconstruction']:.2f} | "
                       f"{s['mesh']:.2f} | {nef:.2f} | {nef / s['mesh'] if s['mesh'] > 0 else 0:.3g} | "
                       f"{man_cols} | {'yes' if m['ok'] else 'no'} |\n")
         out.write("\nPictures: `NAME.png` (the mesh beside Nef's boundary).\n")
