@@ -406,10 +406,16 @@ Position position(const Point& p)
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
 }
 
+/// The margin added to a distance measured on positions rounded to doubles, for that rounding
+/// and the distance's: 256 units in the last place of the largest coordinate.
+inline double rounding_margin(double largest_coordinate)
+{
+  return 256 * std::numeric_limits<double>::epsilon() * largest_coordinate;
+}
+
 /// The largest distance from `points` to the triangles of `mesh` (0 if every point is a
-/// vertex; infinity if the mesh has no triangle), plus a margin of 256 units in the last
-/// place of the largest coordinate if not 0, for the rounding of the positions (to doubles,
-/// alike for both) and of the distance. Only the points at no vertex are searched for.
+/// vertex; infinity if the mesh has no triangle), plus rounding_margin() if not 0 (the
+/// positions are rounded to doubles alike for both). Only the points at no vertex are searched for.
 template <class Point, class TriangleMesh>
 double largest_distance_to_mesh(const std::vector<Point>& points, const TriangleMesh& mesh)
 {
@@ -428,7 +434,7 @@ double largest_distance_to_mesh(const std::vector<Point>& points, const Triangle
   const double e = largest_distance_to({to_shell(mesh)}, [&](const auto& f) {
     for (const auto& x : away) f(x);
   });
-  return e > 0 ? e + 256 * std::numeric_limits<double>::epsilon() * scale : e;
+  return e > 0 ? e + rounding_margin(scale) : e;
 }
 
 /// A bound of the largest distance from a point of `mesh` to the nearest of `points`, made
@@ -437,8 +443,7 @@ double largest_distance_to_mesh(const std::vector<Point>& points, const Triangle
 /// corner_covering_radius()) to them. Returns the largest bound (0 for a mesh without
 /// triangles), or a value >= `limit` as soon as a triangle's cannot be brought below it.
 /// The mesh's vertices being points, a triangle needs no split and no search while its
-/// corner covering radius is below `limit`. With a margin of 256 units in the last place of
-/// the largest coordinate, for the rounding (as largest_distance_to_mesh()).
+/// corner covering radius is below `limit`. With rounding_margin().
 template <class Point, class TriangleMesh>
 double mesh_distance_bound(const TriangleMesh& mesh, const std::vector<Point>& points, double limit)
 {
@@ -446,7 +451,7 @@ double mesh_distance_bound(const TriangleMesh& mesh, const std::vector<Point>& p
   const Shell s = to_shell(mesh);
   double scale = 0;
   for (const V& p : s.points) scale = (std::max)({scale, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
-  const double margin = 256 * std::numeric_limits<double>::epsilon() * scale;
+  const double margin = rounding_margin(scale);
   std::optional<Point_search> search; // built on the first triangle that needs it
   auto distance = [&](const V& x) {
     if (!search) search.emplace(points);
