@@ -366,6 +366,13 @@ then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
   > "$work/tripod.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/tripod.txt"; then ok
 else ko "tripod + tiny octahedron: a mesh within d of the boundary"; cat "$work/tripod.txt"; fi
+# CGAL's joint + a turned icosahedron a thousandth of its size at d = 20%: every level up to d/4
+# fails (the advancing front leaves holes, plane by plane too) but the last, d/4 with the points
+# on sharp creases kept: a mesh within d of Nef's boundary both ways (validate: exit 0)
+"$pmsum" validate "$data/joint.off" "$data/icosahedron_turned.off" --scale-q 0.001 -d 0.2 --relative --mesh \
+  --quiet > "$work/joint.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/joint.txt" && grep -q "2 refinements" "$work/joint.txt"; then ok
+else ko "joint + tiny turned icosahedron: meshed at the last level"; cat "$work/joint.txt"; fi
 # grate-a (bars that touch) + a tetrahedron a thousandth of its size at d = 10%: no valid mesh
 # at any level: an error, no file
 "$pmsum" generate grate-a -o "$work/grate-a.off" && ok || ko "generate grate-a"

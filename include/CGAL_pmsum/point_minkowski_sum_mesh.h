@@ -157,7 +157,7 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// no connected part of the sum split (splits_a_part()), the points' distance to the mesh and the
 /// mesh's to the points (mesh_distance_bound())); if a check fails, d is halved, twice at
 /// most, at d/2 first with the points on sharp creases kept, then
-/// without (see `levels`), reusing the coarser decisions; then
+/// without, at d/4 without them, then with (see `levels`), reusing the coarser decisions; then
 /// Mesh_reconstruction_failed, which says why each level was refused.
 /// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
 /// stage began. GT: the kernel in which the points are computed.
@@ -171,10 +171,12 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
   // The levels: d, then d/2 keeping the points on sharp creases (they help a corner or a
   // strip far narrower than d), then d/2 again without them (a hair smaller: coarse to fine
   // needs a smaller d; rows of crease points beside the faces' rows may hurt the advancing
-  // front), then d/4.
+  // front), then d/4, then d/4 again with them (last: the one level that costs only inputs
+  // every other level fails; a grate plus a tiny tetrahedron is meshed plane by plane there).
   struct Level { int halvings; Creases creases; bool again; };
   const Level levels[] = {{0, Creases::as_covering_needs, false}, {1, Creases::sharp_kept, false},
-                          {1, Creases::as_covering_needs, true}, {2, Creases::as_covering_needs, false}};
+                          {1, Creases::as_covering_needs, true}, {2, Creases::as_covering_needs, false},
+                          {2, Creases::sharp_kept, true}};
   const Sum_parts parts(mp, mq);
   std::string failures;
   for (const Level& level : levels) {
@@ -269,9 +271,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
 /// planes of the sum's faces; `Mesh_statistics::by_planes`); if that fails too, the sum is
 /// recomputed at `d/2` keeping every point on a sharp crease of the sum
-/// (`Mesh_statistics::crease_points`), then at `d/2` without them, then `d/4` (with more trim
-/// points: the edges of every face strip narrower than d/2 followed to the strip's ends); if
-/// every one fails,
+/// (`Mesh_statistics::crease_points`), then at `d/2` without them, then `d/4`, then `d/4`
+/// with them again (after `d`, with more trim points: the edges of every face strip narrower
+/// than d/2 followed to the strip's ends); if every one fails,
 /// `CGAL::Pmsum::Mesh_reconstruction_failed` is thrown and `mesh` is left empty.
 ///
 /// Proved: every point of the exact boundary is closer than `d' + e` to the mesh, `e` the
