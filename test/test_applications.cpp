@@ -626,6 +626,31 @@ TEST_CASE("mesh_distance_bound: the largest distance from a mesh to points, boun
   CHECK(mesh_distance_bound(Mesh(), points, 0.1) == 0);
 }
 
+TEST_CASE("insert_left_out_points: points beside the mesh become vertices, one part at a time", "[applications][mesh]")
+{
+  using CGAL::Pmsum::internal::insert_left_out_points;
+  using CGAL::Pmsum::internal::largest_distance_to_mesh;
+  Mesh m = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+  std::vector<IK::Point_3> points;
+  for (auto v : m.vertices()) points.push_back(m.point(v));
+  std::vector<std::size_t> part(points.size(), 0);
+  // two points just above the top face, over one of its triangles (both put back: the second
+  // in the next pass), one just beside the face x = 1, and one beside the bottom of another part
+  points.emplace_back(0.7, 0.2, 1.01);
+  points.emplace_back(0.75, 0.1, 1.02);
+  points.emplace_back(1.03, 0.5, 0.4);
+  points.emplace_back(0.5, 0.5, -0.02);
+  part.insert(part.end(), {0, 0, 0, 1});
+  CHECK(largest_distance_to_mesh(points, m) == Approx(0.03).epsilon(1e-6));
+  CHECK(insert_left_out_points<CGAL::Sequential_tag>(points, part, m) == 3);
+  REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
+  CHECK(vertices(m).size() == 8 + 3);
+  CHECK(faces(m).size() == 12 + 3 * 2);
+  CHECK(largest_distance_to_mesh(points, m) == Approx(0.02).epsilon(1e-6)); // the other part's point
+  CHECK(insert_left_out_points<CGAL::Sequential_tag>(points, part, m) == 0);
+  CHECK(CGAL::Polygon_mesh_processing::volume(m) > 1);
+}
+
 TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", "[applications][mesh]")
 {
   Mesh m = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));

@@ -17,6 +17,8 @@
 // d + e to the mesh, e the largest distance from an output point to the mesh (0 when every
 // point is a vertex). A reconstruction that drops the points of a part of the boundary (the
 // walls of a narrow passage, say) may still be a valid mesh, of the wrong shape: e tells.
+// Where e is below d, the points left out are put back as vertices where they can be
+// (internal/mesh_left_out_points.h), which lowers e, often to 0.
 // And the mesh must stay near the points: they lie on the exact boundary, so a mesh whose
 // every point is closer than d to one (mesh_distance_bound()) is closer than d to the boundary.
 // A valid mesh can fail it: a triangle cutting deep across a sharp corner, or closing a hole
@@ -26,6 +28,7 @@
 #define CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
 
 #include <CGAL_pmsum/check_mesh.h>
+#include <CGAL_pmsum/internal/mesh_left_out_points.h>
 #include <CGAL_pmsum/internal/mesh_reconstruction.h>
 #include <CGAL_pmsum/internal/plane_triangulation.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
@@ -224,6 +227,12 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                             : std::numeric_limits<double>::infinity();
+      // Points left out, none as far as dl (farther: a part of the boundary is missing, and
+      // the level refused): put back where they can be, the mesh is then closer to them.
+      if (ms.point_distance > 0 && ms.point_distance < dl && insert_left_out_points<ConcurrencyTag>(points, part, mesh) > 0) {
+        ms.checks = check_mesh_given<ConcurrencyTag>(mesh, true); // (tents that cross were taken down)
+        ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh) : std::numeric_limits<double>::infinity();
+      }
       ms.mesh_to_boundary_bound = ms.checks.valid() ? mesh_distance_bound(mesh, points, dl)
                                                     : std::numeric_limits<double>::infinity();
       // Plane by plane, the holes left are closed by fill_holes(): never over empty space.

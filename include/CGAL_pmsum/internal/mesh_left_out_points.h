@@ -1,0 +1,133 @@
+// Copyright (c) 2026 CGAL_pmsum contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The last repair of the mesh stage: output points that the reconstruction left out (or that
+// a repair cut away) are put back as vertices, each splitting the triangle nearest to it in
+// three (a low tent from the triangle to the point). Every point lies on the exact boundary
+// and the covering's bound on the boundary's distance to the mesh is d' + e, e the largest
+// distance from a point to the mesh (point_minkowski_sum_mesh.h): a point put back no longer
+// counts in e, and at a sharp corner that the advancing front cut off, the tent puts the
+// corner back. A tent that crosses the mesh (CGAL's self_intersections()) is taken down again,
+// and so is one that would join the points of two parts of the sum (Sum_parts): the mesh
+// stays as valid as it was.
+
+#ifndef CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
+#define CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
+
+#include <CGAL_pmsum/internal/mesh_reconstruction.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Pmsum {
+namespace internal {
+
+/// Puts the points of `points` at no vertex of `mesh` (closed, manifold, free of
+/// self-intersections) back into it where it can (see the file comment), in the points'
+/// order, one per triangle a pass (three passes at most); `part[i]` is the part of point i
+/// (Sum_parts::of()): a point goes only into a triangle whose corners are of its part. The
+/// mesh stays closed, manifold and free of self-intersections. Returns how many were put back.
+template <class ConcurrencyTag, class TriangleMesh, class Point>
+std::size_t insert_left_out_points(const std::vector<Point>& points, const std::vector<std::size_t>& part,
+                                   TriangleMesh& mesh)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Triangles = std::vector<K::Triangle_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+  std::unordered_map<Position, std::size_t, Position_hash> part_at; // of the mesh's vertices
+  for (std::size_t i = 0; i < points.size(); ++i) part_at.emplace(position(points[i]), part[i]);
+  auto part_of = [&](vertex_descriptor v) {
+    const auto it = part_at.find(position(get(CGAL::vertex_point, mesh, v)));
+    return it == part_at.end() ? std::size_t(-1) : it->second;
+  };
+  auto to_k = [](const Point& p) { return K::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
+  const vertex_descriptor none = boost::graph_traits<TriangleMesh>::null_vertex();
+  std::unordered_set<std::size_t> refused; // points whose tent crossed the mesh
+  std::size_t put_back = 0;
+  // Passes: a triangle takes one point a pass, the points that shared it wait for the next.
+  for (int pass = 0; pass < 3; ++pass) {
+    std::unordered_set<Position, Position_hash> at_vertex;
+    for (vertex_descriptor v : vertices(mesh)) at_vertex.insert(position(get(CGAL::vertex_point, mesh, v)));
+    std::vector<std::size_t> left_out;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (!at_vertex.count(position(points[i])) && !refused.count(i)) left_out.push_back(i);
+    if (left_out.empty()) break;
+    std::vector<face_descriptor> face_of;
+    Triangles triangles;
+    for (face_descriptor f : faces(mesh)) {
+      const auto h = halfedge(f, mesh);
+      face_of.push_back(f);
+      triangles.emplace_back(to_k(get(CGAL::vertex_point, mesh, source(h, mesh))),
+                             to_k(get(CGAL::vertex_point, mesh, target(h, mesh))),
+                             to_k(get(CGAL::vertex_point, mesh, target(next(h, mesh), mesh))));
+    }
+    Tree tree(triangles.begin(), triangles.end());
+    tree.accelerate_distance_queries();
+    std::vector<char> used(triangles.size(), 0);
+    std::unordered_map<vertex_descriptor, std::size_t> tent_of; // new vertex -> point
+    bool waiting = false;
+    for (std::size_t i : left_out) {
+      const auto closest = tree.closest_point_and_primitive(to_k(points[i]));
+      const std::size_t k = std::size_t(closest.second - triangles.cbegin());
+      const face_descriptor f = face_of[k];
+      const auto h = halfedge(f, mesh);
+      bool same_part = true;
+      for (vertex_descriptor v : {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)})
+        same_part = same_part && part_of(v) == part[i];
+      if (!same_part) {
+        refused.insert(i);
+        continue;
+      }
+      if (used[k]) {
+        waiting = true;
+        continue;
+      }
+      used[k] = 1;
+      const auto spoke = CGAL::Euler::add_center_vertex(h, mesh);
+      put(CGAL::vertex_point, mesh, target(spoke, mesh), points[i]);
+      tent_of.emplace(target(spoke, mesh), i);
+    }
+    // Take down every tent with a triangle that crosses another, until none does (a tent
+    // taken down brings back a triangle that was not tested against the others).
+    auto tent_at = [&](face_descriptor f) {
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+        if (tent_of.count(target(h, mesh))) return target(h, mesh);
+      return none;
+    };
+    for (bool crossed = true; crossed && !tent_of.empty();) {
+      std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+      CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(mesh, std::back_inserter(pairs));
+      crossed = !pairs.empty();
+      std::unordered_set<vertex_descriptor> down;
+      for (const auto& [a, b] : pairs)
+        for (face_descriptor f : {a, b})
+          if (const vertex_descriptor v = tent_at(f); v != none) down.insert(v);
+      if (crossed && down.empty()) // (the mesh had no crossing: not expected) all of them
+        for (const auto& [v, i] : tent_of) down.insert(v);
+      for (vertex_descriptor v : down) {
+        refused.insert(tent_of.at(v));
+        CGAL::Euler::remove_center_vertex(halfedge(v, mesh), mesh);
+        tent_of.erase(v);
+      }
+    }
+    put_back += tent_of.size();
+    if (!waiting) break;
+  }
+  return put_back;
+}
+
+} // namespace internal
+} // namespace Pmsum
+} // namespace CGAL
+
+#endif // CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
