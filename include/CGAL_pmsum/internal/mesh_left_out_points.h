@@ -19,9 +19,12 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -29,6 +32,48 @@
 namespace CGAL {
 namespace Pmsum {
 namespace internal {
+
+/// Takes down every tent (`tent_of`: its new vertex -> its point, the point then added to
+/// `refused`) with a triangle that crosses another triangle of `mesh` or is degenerate, until
+/// none does: a tent taken down brings back a triangle that was not tested against the others.
+template <class ConcurrencyTag, class TriangleMesh, class Tents>
+void take_down_crossing_tents(TriangleMesh& mesh, Tents& tent_of, std::unordered_set<std::size_t>& refused)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const vertex_descriptor none = boost::graph_traits<TriangleMesh>::null_vertex();
+  auto tent_at = [&](face_descriptor f) {
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      if (tent_of.count(target(h, mesh))) return target(h, mesh);
+    return none;
+  };
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor>;
+  for (bool crossed = true; crossed && !tent_of.empty();) {
+    // Only the tents' triangles and those whose boxes meet theirs can cross (the others did not).
+    std::vector<Box> tents, others;
+    for (face_descriptor f : faces(mesh))
+      (tent_at(f) != none ? tents : others).emplace_back(CGAL::Polygon_mesh_processing::face_bbox(f, mesh), f);
+    std::set<face_descriptor> near;
+    for (const Box& b : tents) near.insert(b.info());
+    CGAL::box_intersection_d(tents.begin(), tents.end(), others.begin(), others.end(),
+                             [&](const Box&, const Box& b) { near.insert(b.info()); });
+    const std::vector<face_descriptor> range(near.begin(), near.end());
+    std::vector<std::pair<face_descriptor, face_descriptor>> pairs; // (degenerate f: (f, f))
+    CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(range, mesh, std::back_inserter(pairs));
+    crossed = !pairs.empty();
+    std::unordered_set<vertex_descriptor> down;
+    for (const auto& [a, b] : pairs)
+      for (face_descriptor f : {a, b})
+        if (const vertex_descriptor v = tent_at(f); v != none) down.insert(v);
+    if (crossed && down.empty()) // (the mesh had no crossing: not expected) all of them
+      for (const auto& [v, i] : tent_of) down.insert(v);
+    for (vertex_descriptor v : down) {
+      refused.insert(tent_of.at(v));
+      CGAL::Euler::remove_center_vertex(halfedge(v, mesh), mesh);
+      tent_of.erase(v);
+    }
+  }
+}
 
 /// Puts the points of `points` at no vertex of `mesh` (closed, manifold, free of
 /// self-intersections) back into it where it can (see the file comment), in the points'
@@ -51,8 +96,7 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     return it == part_at.end() ? std::size_t(-1) : it->second;
   };
   auto to_k = [](const Point& p) { return K::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
-  const vertex_descriptor none = boost::graph_traits<TriangleMesh>::null_vertex();
-  std::unordered_set<std::size_t> refused; // points whose tent crossed the mesh
+  std::unordered_set<std::size_t> refused; // points whose tent was taken down, or of another part
   std::size_t put_back = 0;
   // Passes: a triangle takes one point a pass, the points that shared it wait for the next.
   for (int pass = 0; pass < 3; ++pass) {
@@ -77,49 +121,21 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     std::unordered_map<vertex_descriptor, std::size_t> tent_of; // new vertex -> point
     bool waiting = false;
     for (std::size_t i : left_out) {
-      const auto closest = tree.closest_point_and_primitive(to_k(points[i]));
-      const std::size_t k = std::size_t(closest.second - triangles.cbegin());
-      const face_descriptor f = face_of[k];
-      const auto h = halfedge(f, mesh);
+      const std::size_t k = std::size_t(tree.closest_point_and_primitive(to_k(points[i])).second - triangles.cbegin());
+      const auto h = halfedge(face_of[k], mesh);
       bool same_part = true;
       for (vertex_descriptor v : {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)})
         same_part = same_part && part_of(v) == part[i];
-      if (!same_part) {
-        refused.insert(i);
-        continue;
-      }
-      if (used[k]) {
-        waiting = true;
-        continue;
-      }
-      used[k] = 1;
-      const auto spoke = CGAL::Euler::add_center_vertex(h, mesh);
-      put(CGAL::vertex_point, mesh, target(spoke, mesh), points[i]);
-      tent_of.emplace(target(spoke, mesh), i);
-    }
-    // Take down every tent with a triangle that crosses another, until none does (a tent
-    // taken down brings back a triangle that was not tested against the others).
-    auto tent_at = [&](face_descriptor f) {
-      for (auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-        if (tent_of.count(target(h, mesh))) return target(h, mesh);
-      return none;
-    };
-    for (bool crossed = true; crossed && !tent_of.empty();) {
-      std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-      CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(mesh, std::back_inserter(pairs));
-      crossed = !pairs.empty();
-      std::unordered_set<vertex_descriptor> down;
-      for (const auto& [a, b] : pairs)
-        for (face_descriptor f : {a, b})
-          if (const vertex_descriptor v = tent_at(f); v != none) down.insert(v);
-      if (crossed && down.empty()) // (the mesh had no crossing: not expected) all of them
-        for (const auto& [v, i] : tent_of) down.insert(v);
-      for (vertex_descriptor v : down) {
-        refused.insert(tent_of.at(v));
-        CGAL::Euler::remove_center_vertex(halfedge(v, mesh), mesh);
-        tent_of.erase(v);
+      if (!same_part) refused.insert(i);
+      else if (used[k]) waiting = true;
+      else {
+        used[k] = 1;
+        const auto spoke = CGAL::Euler::add_center_vertex(h, mesh);
+        put(CGAL::vertex_point, mesh, target(spoke, mesh), points[i]);
+        tent_of.emplace(target(spoke, mesh), i);
       }
     }
+    take_down_crossing_tents<ConcurrencyTag>(mesh, tent_of, refused);
     put_back += tent_of.size();
     if (!waiting) break;
   }
