@@ -343,6 +343,7 @@ head -c 200 "$work/m.ply" | grep -aq "format binary_little_endian" && ok || ko "
 if [ $? = 0 ] && grep -q "mesh checks       closed, manifold" "$work/vm.txt" && grep -q "1 shells (0 voids), exact: 1 (0)" "$work/vm.txt" \
    && grep -q '"mesh_to_exact_over_d": 0\.' "$work/vm.json" && grep -q '"exact_to_mesh_over_d": 0\.' "$work/vm.json" \
    && grep -q '"boundary_to_mesh_bound": 0\.' "$work/vm.json" && grep -q '"mesh_to_boundary_bound": 0\.' "$work/vm.json" \
+   && grep -q '"points_put_back": [0-9]' "$work/vm.json" \
    && [ -s "$work/vm.off" ]; then ok; else ko "validate --mesh"; cat "$work/vm.txt"; fi
 expect_fail 2 ".off, .obj, .ply or .stl" -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.xyz"
 expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --all-candidates

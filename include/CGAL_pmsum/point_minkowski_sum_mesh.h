@@ -52,6 +52,9 @@ struct Mesh_statistics
   bool crease_points = false;
   /// the mesh was made plane by plane: the advancing front's mesh of the same points was refused
   bool by_planes = false;
+  /// output points the reconstruction left out that were put back as vertices (each splitting
+  /// its nearest triangle: internal/mesh_left_out_points.h)
+  std::size_t points_put_back = 0;
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
   std::size_t triangles = 0;   ///< triangles of the mesh
   Mesh_checks checks;          ///< the checks of the mesh returned
@@ -229,7 +232,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                                             : std::numeric_limits<double>::infinity();
       // Points left out, none as far as dl (farther: a part of the boundary is missing, and
       // the level refused): put back where they can be, the mesh is then closer to them.
-      if (ms.point_distance > 0 && ms.point_distance < dl && insert_left_out_points<ConcurrencyTag>(points, part, mesh) > 0) {
+      ms.points_put_back = ms.point_distance > 0 && ms.point_distance < dl
+                             ? insert_left_out_points<ConcurrencyTag>(points, part, mesh) : 0;
+      if (ms.points_put_back > 0) {
         ms.checks = check_mesh_given<ConcurrencyTag>(mesh, true); // (tents that cross were taken down)
         ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh) : std::numeric_limits<double>::infinity();
       }
