@@ -109,9 +109,7 @@ bool splits_a_part(const TriangleMesh& mesh, const std::vector<CGAL::Exact_predi
                    const std::vector<std::size_t>& part)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  std::unordered_map<Position, std::size_t, Position_hash> part_at;
-  for (std::size_t i = 0; i < positions.size(); ++i)
-    part_at.emplace(position(positions[i]), part[i]);
+  const auto part_at = parts_by_position(positions, part);
   auto volume_id = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   if (PMP::volume_connected_components(mesh, volume_id) < 2) return false;
   std::unordered_map<std::size_t, std::size_t> volume_of; // part -> volume

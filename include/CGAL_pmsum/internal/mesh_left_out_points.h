@@ -24,6 +24,7 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <algorithm>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
@@ -89,8 +90,7 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Triangles = std::vector<K::Triangle_3>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
-  std::unordered_map<Position, std::size_t, Position_hash> part_at; // of the mesh's vertices
-  for (std::size_t i = 0; i < points.size(); ++i) part_at.emplace(position(points[i]), part[i]);
+  const auto part_at = parts_by_position(points, part); // of the mesh's vertices
   auto part_of = [&](vertex_descriptor v) {
     const auto it = part_at.find(position(get(CGAL::vertex_point, mesh, v)));
     return it == part_at.end() ? std::size_t(-1) : it->second;
@@ -100,11 +100,9 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
   std::size_t put_back = 0;
   // Passes: a triangle takes one point a pass, the points that shared it wait for the next.
   for (int pass = 0; pass < 3; ++pass) {
-    std::unordered_set<Position, Position_hash> at_vertex;
-    for (vertex_descriptor v : vertices(mesh)) at_vertex.insert(position(get(CGAL::vertex_point, mesh, v)));
-    std::vector<std::size_t> left_out;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      if (!at_vertex.count(position(points[i])) && !refused.count(i)) left_out.push_back(i);
+    std::vector<std::size_t> left_out = points_at_no_vertex(points, mesh);
+    left_out.erase(std::remove_if(left_out.begin(), left_out.end(), [&](std::size_t i) { return refused.count(i) > 0; }),
+                   left_out.end());
     if (left_out.empty()) break;
     std::vector<face_descriptor> face_of;
     Triangles triangles;

@@ -406,6 +406,29 @@ Position position(const Point& p)
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
 }
 
+/// The indices of the points at no vertex of `mesh` (positions rounded to doubles).
+template <class Point, class TriangleMesh>
+std::vector<std::size_t> points_at_no_vertex(const std::vector<Point>& points, const TriangleMesh& mesh)
+{
+  std::unordered_set<Position, Position_hash> at_vertex;
+  for (auto v : vertices(mesh)) at_vertex.insert(position(get(CGAL::vertex_point, mesh, v)));
+  std::vector<std::size_t> away;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!at_vertex.count(position(points[i]))) away.push_back(i);
+  return away;
+}
+
+/// The part of the point at each position (`part[i]`: of `points[i]`, Sum_parts::of()), to
+/// tell the parts of a mesh's vertices.
+template <class Point>
+std::unordered_map<Position, std::size_t, Position_hash> parts_by_position(const std::vector<Point>& points,
+                                                                           const std::vector<std::size_t>& part)
+{
+  std::unordered_map<Position, std::size_t, Position_hash> part_at;
+  for (std::size_t i = 0; i < points.size(); ++i) part_at.emplace(position(points[i]), part[i]);
+  return part_at;
+}
+
 /// The margin added to a distance measured on positions rounded to doubles, for that rounding
 /// and the distance's: 256 units in the last place of the largest coordinate.
 inline double rounding_margin(double largest_coordinate)
@@ -420,13 +443,10 @@ template <class Point, class TriangleMesh>
 double largest_distance_to_mesh(const std::vector<Point>& points, const TriangleMesh& mesh)
 {
   if (faces(mesh).empty()) return std::numeric_limits<double>::infinity();
-  std::unordered_set<Position, Position_hash> at_vertex;
-  for (auto v : vertices(mesh)) at_vertex.insert(position(get(CGAL::vertex_point, mesh, v)));
   std::vector<Point_search::K::Point_3> away;
   double scale = 0;
-  for (const Point& p : points) {
-    const Position x = position(p);
-    if (at_vertex.count(x)) continue;
+  for (std::size_t i : points_at_no_vertex(points, mesh)) {
+    const Position x = position(points[i]);
     away.emplace_back(x[0], x[1], x[2]);
     scale = (std::max)({scale, std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
   }
