@@ -4,6 +4,8 @@
 #include <CGAL_pmsum/point_offset.h>
 
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Random.h>
+#include <CGAL/intersections.h>
 
 #include <boost/property_map/function_property_map.hpp>
 
@@ -664,6 +666,52 @@ TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", 
   Mesh tiny = to_mesh<Mesh>(box({2, 0, 0}, {2.1, 0.1, 0.1}));
   CGAL::Pmsum::internal::remove_bubbles(tiny, 1);
   CHECK(faces(tiny).size() == 12);
+}
+
+TEST_CASE("crossings_near: the crossings of the suspect triangles only; the advancing front's cross none",
+          "[applications][mesh]")
+{
+  using CGAL::Pmsum::internal::crossings_near;
+  using face_descriptor = Mesh::Face_index;
+  // two boxes that cross, and a third far from both
+  Soup soup = box({0, 0, 0}, {1, 1, 1});
+  soup.append(box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}));
+  soup.append(box({3, 0, 0}, {4, 1, 1}));
+  const Mesh m = to_mesh<Mesh>(soup);
+  REQUIRE(faces(m).size() == 36);
+  auto of_box = [](int k) { return [k](face_descriptor f) { return int(f.idx()) / 12 == k; }; };
+  const auto second = crossings_near<CGAL::Sequential_tag>(m, of_box(1));
+  CHECK_FALSE(second.empty());
+  for (const auto& [f, g] : second) CHECK((of_box(1)(f) || of_box(1)(g)));
+  CHECK(crossings_near<CGAL::Parallel_if_available_tag>(m, of_box(1)).size() == second.size());
+  CHECK(crossings_near<CGAL::Sequential_tag>(m, of_box(2)).empty()); // the boxes' crossings are not near it
+  CHECK(crossings_near<CGAL::Sequential_tag>(m, [](face_descriptor) { return false; }).empty());
+
+  // The advancing front's triangles are facets of one Delaunay triangulation: on points
+  // scattered at random in a slab, a surface of many folds, no two triangles without a
+  // common corner meet.
+  using EP = CGAL::Exact_predicates_inexact_constructions_kernel;
+  CGAL::Random random(7);
+  std::vector<EP::Point_3> points;
+  std::vector<EP::Vector_3> normals;
+  for (int i = 0; i < 300; ++i) {
+    points.emplace_back(random.get_double(0, 1), random.get_double(0, 1), random.get_double(0, 0.2));
+    normals.push_back(CGAL::NULL_VECTOR);
+  }
+  const auto triangles = CGAL::Pmsum::internal::advancing_front_triangles(points, normals, 1);
+  REQUIRE(triangles.size() > 100);
+  std::size_t disjoint = 0, meeting = 0;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (std::size_t j = i + 1; j < triangles.size(); ++j) {
+      const auto& a = triangles[i];
+      const auto& b = triangles[j];
+      if (std::find_first_of(a.begin(), a.end(), b.begin(), b.end()) != a.end()) continue;
+      ++disjoint;
+      meeting += CGAL::do_intersect(EP::Triangle_3(points[a[0]], points[a[1]], points[a[2]]),
+                                    EP::Triangle_3(points[b[0]], points[b[1]], points[b[2]]));
+    }
+  CHECK(disjoint > 1000);
+  CHECK(meeting == 0);
 }
 
 TEST_CASE("splits_a_part: the points of one part of the sum on two volumes", "[applications][mesh]")

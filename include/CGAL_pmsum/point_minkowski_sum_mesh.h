@@ -225,7 +225,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         cover.emplace(pipeline.pairs(), mp, mq);
         triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, *cover);
       }
-      ms.checks = mesh_from_triangles<ConcurrencyTag>(points, triangles, dl, mesh);
+      ms.checks = mesh_from_triangles<ConcurrencyTag>(
+        points, triangles, way == 0 ? Triangles_from::one_delaunay_triangulation : Triangles_from::anywhere, dl, mesh);
       ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                             : std::numeric_limits<double>::infinity();
       // Points left out, none as far as dl (farther: a part of the boundary is missing, and

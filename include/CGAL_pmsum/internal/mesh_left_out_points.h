@@ -19,13 +19,9 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
-#include <set>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -48,19 +44,9 @@ void take_down_crossing_tents(TriangleMesh& mesh, Tents& tent_of, std::unordered
       if (tent_of.count(target(h, mesh))) return target(h, mesh);
     return none;
   };
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor>;
   for (bool crossed = true; crossed && !tent_of.empty();) {
-    // Only the tents' triangles and those whose boxes meet theirs can cross (the others did not).
-    std::vector<Box> tents, others;
-    for (face_descriptor f : faces(mesh))
-      (tent_at(f) != none ? tents : others).emplace_back(CGAL::Polygon_mesh_processing::face_bbox(f, mesh), f);
-    std::set<face_descriptor> near;
-    for (const Box& b : tents) near.insert(b.info());
-    CGAL::box_intersection_d(tents.begin(), tents.end(), others.begin(), others.end(),
-                             [&](const Box&, const Box& b) { near.insert(b.info()); });
-    const std::vector<face_descriptor> range(near.begin(), near.end());
-    std::vector<std::pair<face_descriptor, face_descriptor>> pairs; // (degenerate f: (f, f))
-    CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(range, mesh, std::back_inserter(pairs));
+    // Only the tents' triangles can cross (the others did not).
+    const auto pairs = crossings_near<ConcurrencyTag>(mesh, [&](face_descriptor f) { return tent_at(f) != none; });
     crossed = !pairs.empty();
     std::unordered_set<vertex_descriptor> down;
     for (const auto& [a, b] : pairs)
