@@ -15,6 +15,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -32,25 +35,50 @@ struct Mesh_distance
 
 namespace internal {
 
+/// The triangles of shells (as `Point_search::K` triangles), in the shells' order, in an AABB
+/// tree for distance queries. Not copied: the tree refers to the triangles.
+class Shell_triangle_tree
+{
+public:
+  using K = Point_search::K;
+
+  explicit Shell_triangle_tree(const std::vector<Shell>& shells)
+  {
+    for (const Shell& s : shells)
+      for (const auto& t : s.triangles) {
+        auto p = [&](int i) { return K::Point_3(s.points[t[i]][0], s.points[t[i]][1], s.points[t[i]][2]); };
+        m_triangles.emplace_back(p(0), p(1), p(2));
+      }
+    if (m_triangles.empty()) return;
+    m_tree.rebuild(m_triangles.begin(), m_triangles.end());
+    m_tree.accelerate_distance_queries();
+  }
+  Shell_triangle_tree(const Shell_triangle_tree&) = delete;
+  Shell_triangle_tree& operator=(const Shell_triangle_tree&) = delete;
+
+  bool empty() const { return m_triangles.empty(); }
+  /// @pre !empty()
+  double squared_distance(const K::Point_3& x) const { return m_tree.squared_distance(x); }
+  /// The index (in the shells' order) of a triangle nearest to x. @pre !empty()
+  std::size_t nearest(const K::Point_3& x) const
+  { return std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin()); }
+
+private:
+  using Triangles = std::vector<K::Triangle_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+  Triangles m_triangles;
+  Tree m_tree;
+};
+
 /// The largest distance from the points that `for_each_point(f)` passes to `f` (as
 /// `Point_search::K::Point_3`) to the triangles of `to`: infinity if `to` has none.
 template <class ForEachPoint>
 double largest_distance_to(const std::vector<Shell>& to, const ForEachPoint& for_each_point)
 {
-  using K = Point_search::K;
-  using Triangles = std::vector<K::Triangle_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
-  Triangles triangles;
-  for (const Shell& s : to)
-    for (const auto& t : s.triangles) {
-      auto p = [&](int i) { return K::Point_3(s.points[t[i]][0], s.points[t[i]][1], s.points[t[i]][2]); };
-      triangles.emplace_back(p(0), p(1), p(2));
-    }
-  if (triangles.empty()) return std::numeric_limits<double>::infinity();
-  Tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
+  const Shell_triangle_tree tree(to);
+  if (tree.empty()) return std::numeric_limits<double>::infinity();
   double worst = 0;
-  for_each_point([&](const K::Point_3& x) { worst = (std::max)(worst, tree.squared_distance(x)); });
+  for_each_point([&](const Shell_triangle_tree::K::Point_3& x) { worst = (std::max)(worst, tree.squared_distance(x)); });
   return std::sqrt(worst);
 }
 

@@ -16,9 +16,6 @@
 
 #include <CGAL_pmsum/internal/mesh_reconstruction.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
@@ -71,17 +68,14 @@ template <class ConcurrencyTag, class TriangleMesh, class Point>
 std::size_t insert_left_out_points(const std::vector<Point>& points, const std::vector<std::size_t>& part,
                                    TriangleMesh& mesh)
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Triangles = std::vector<K::Triangle_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
   const auto part_at = parts_by_position(points, part); // of the mesh's vertices
   auto part_of = [&](vertex_descriptor v) {
     const auto it = part_at.find(position(get(CGAL::vertex_point, mesh, v)));
     return it == part_at.end() ? std::size_t(-1) : it->second;
   };
-  auto to_k = [](const Point& p) { return K::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); };
+  const auto positions = double_positions(points);
   std::unordered_set<std::size_t> refused; // points whose tent was taken down, or of another part
   std::size_t put_back = 0;
   // Passes: a triangle takes one point a pass, the points that shared it wait for the next.
@@ -90,22 +84,13 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     left_out.erase(std::remove_if(left_out.begin(), left_out.end(), [&](std::size_t i) { return refused.count(i) > 0; }),
                    left_out.end());
     if (left_out.empty()) break;
-    std::vector<face_descriptor> face_of;
-    Triangles triangles;
-    for (face_descriptor f : faces(mesh)) {
-      const auto h = halfedge(f, mesh);
-      face_of.push_back(f);
-      triangles.emplace_back(to_k(get(CGAL::vertex_point, mesh, source(h, mesh))),
-                             to_k(get(CGAL::vertex_point, mesh, target(h, mesh))),
-                             to_k(get(CGAL::vertex_point, mesh, target(next(h, mesh), mesh))));
-    }
-    Tree tree(triangles.begin(), triangles.end());
-    tree.accelerate_distance_queries();
-    std::vector<char> used(triangles.size(), 0);
+    const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end()); // to_shell()'s order
+    const Shell_triangle_tree tree({to_shell(mesh)});
+    std::vector<char> used(face_of.size(), 0);
     std::unordered_map<vertex_descriptor, std::size_t> tent_of; // new vertex -> point
     bool waiting = false;
     for (std::size_t i : left_out) {
-      const std::size_t k = std::size_t(tree.closest_point_and_primitive(to_k(points[i])).second - triangles.cbegin());
+      const std::size_t k = tree.nearest(positions[i]);
       const auto h = halfedge(face_of[k], mesh);
       bool same_part = true;
       for (vertex_descriptor v : {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)})
