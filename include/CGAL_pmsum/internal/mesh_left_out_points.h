@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -45,7 +46,7 @@ void take_down_crossing_tents(TriangleMesh& mesh, Tents& tent_of, std::unordered
     // Only the tents' triangles can cross (the others did not).
     const auto pairs = crossings_near<ConcurrencyTag>(mesh, [&](face_descriptor f) { return tent_at(f) != none; });
     crossed = !pairs.empty();
-    std::unordered_set<vertex_descriptor> down;
+    std::set<vertex_descriptor> down; // (ordered: the pairs' order varies with threads, and so would the slots the mesh reuses)
     for (const auto& [a, b] : pairs)
       for (face_descriptor f : {a, b})
         if (const vertex_descriptor v = tent_at(f); v != none) down.insert(v);
