@@ -499,11 +499,15 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
       const auto a = contact(), b = contact();
       if (a == b) continue;
       const Translation_segment s({to_nt<Exact_nt>(a), Exact_nt(1)}, {to_nt<Exact_nt>(b), Exact_nt(1)});
-      std::vector<Segment_parameter> ed, ee;
+      std::vector<Segment_parameter> ed, ee, en;
       sd.free_ends(s, nullptr, 0, ed);
       se.free_ends(s, nullptr, 0, ee);
       REQUIRE(ed.size() == ee.size());
       for (std::size_t i = 0; i < ed.size(); ++i) CHECK(compare(ed[i], ee[i]) == CGAL::ZERO);
+      // Without the quick exits (as where an end is known free): the same ends.
+      sd.free_ends(s, nullptr, 0, en, Known_ends{{}, true});
+      REQUIRE(en.size() == ed.size());
+      for (std::size_t i = 0; i < ed.size(); ++i) CHECK(compare(ed[i], en[i]) == CGAL::ZERO);
       ++segments;
       ends_found += ed.size();
     }

@@ -22,7 +22,8 @@
 // Minkowski difference), so a pair crosses on one interval of the segment. Intervals alone
 // often know most of it (Cd_filter::crossing_range(): parameters where the pair certainly
 // crosses, and where it certainly does not); the exact tests are left for the elements near
-// the ends of that interval. Quick exits, cheapest first:
+// the ends of that interval. Quick exits, cheapest first (none where an end is known free:
+// then something is free, Known_ends):
 //  - the witnesses of the ends certainly cross on all of the segment (intervals only);
 //  - one pair crosses at a + delta and at b + delta (the same infinitesimal perturbation
 //    delta): then x(l) + delta is in U for every l (convexity), and nothing is free; first
@@ -118,6 +119,17 @@ struct Translation_segment
   }
 };
 
+/// What is known of the ends of a segment of translations before its search.
+struct Known_ends
+{
+  /// Item pairs known to cross at a and at b (the end is inside the sum), tried first.
+  std::array<std::optional<std::pair<Index, Index>>, 2> witnesses;
+  /// Is an end known free (a lattice point the CD filter found on the boundary)? Then the
+  /// segment is not covered, and no quick exit is tried (each is an exact proof that it is,
+  /// so skipping them changes no answer; on the hooks they cost half of the search).
+  bool an_end_free = false;
+};
+
 /// The free parts of segments of translations (see the file comment). One per thread, on
 /// that thread's CD filter.
 class Segment_search
@@ -146,12 +158,11 @@ public:
   /// Appends to `ends` the parameters of the ends of the free parts of s (sorted, each free
   /// part giving its first and last parameter, equal for an isolated free point). Points are
   /// perturbed along directions[0], ..., directions[count - 1], then the axes.
-  /// `witnesses`: item pairs known to cross at a or at b, tried first. `side`: if given, every
+  /// `known`: what is known of s's ends. `side`: if given, every
   /// point is perturbed first along it (after the segment's own direction on open
   /// intervals): the free parts are then those of the side of s that it points to.
   void free_ends(const Translation_segment& s, const Direction* directions, std::uint32_t count,
-                 std::vector<Segment_parameter>& ends,
-                 const std::array<std::optional<std::pair<Index, Index>>, 2>& witnesses = {},
+                 std::vector<Segment_parameter>& ends, const Known_ends& known = {},
                  const Vec3<Exact_nt>* side = nullptr)
   {
     ++m_segments;
@@ -162,12 +173,19 @@ public:
     m_a = enclosure(s.a);
     m_b = enclosure(s.b);
     // Quick exits; else m_pairs holds the item pairs whose boxes overlap on the segment.
-    std::array<Crossing_range, 2> known; // the witnesses' (nothing known without one)
-    for (int k = 0; k < 2; ++k)
-      if (witnesses[k]) known[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, m_a, m_b);
-    if (certainly_covered(known) || known_pair_covers(s, witnesses, known) || covered_by_hops(s, witnesses[0], known[0]) ||
-        one_pair_covers(s))
-      return;
+    m_free_at_start = false;
+    if (known.an_end_free) {
+      collect_pairs(s, Pairs::all);
+    } else {
+      const auto& witnesses = known.witnesses;
+      std::array<Crossing_range, 2> ranges; // the witnesses' (nothing known without one)
+      for (int k = 0; k < 2; ++k)
+        if (witnesses[k]) ranges[k] = m_filter.crossing_range(witnesses[k]->first, witnesses[k]->second, m_a, m_b);
+      if (certainly_covered(ranges) || known_pair_covers(s, witnesses, ranges) || covered_by_hops(s, witnesses[0], ranges[0]))
+        return;
+      // (no pair covers s if the hops found its point 0 free)
+      if (collect_pairs(s, m_free_at_start ? Pairs::all : Pairs::until_one_covers)) return;
+    }
 
     // Each pair's crossing set: runs of its own elements (between the roots of its own
     // predicates). The elements of the segment: R_0 = 0 < R_1 < ... < R_k = 1, the ends of
@@ -255,10 +273,13 @@ private:
     return false;
   }
 
-  /// Does one of the item pairs whose boxes overlap on s cover it?
-  /// Fills m_pairs with the item pairs that may cross on s, and m_ranges with what is known
-  /// of where (Cd_filter::crossing_range()).
-  bool one_pair_covers(const Translation_segment& s)
+  /// How far collect_pairs() goes.
+  enum class Pairs : std::uint8_t { until_one_covers, all };
+
+  /// Fills m_pairs with the item pairs whose boxes overlap on s and that may cross on it, and
+  /// m_ranges with what is known of where (Cd_filter::crossing_range()). With
+  /// Pairs::until_one_covers, stops at the first that covers s (pair_covers()) and returns true.
+  bool collect_pairs(const Translation_segment& s, Pairs how)
   {
     m_pairs.clear();
     m_ranges.clear();
@@ -269,7 +290,7 @@ private:
         return false;
       m_pairs.emplace_back(u, v);
       m_ranges.push_back(range);
-      if (!pair_covers(s, m_pairs.back(), range)) return false;
+      if (how == Pairs::all || !pair_covers(s, m_pairs.back(), range)) return false;
       m_last_quick = m_pairs.back();
       return found = true;
     });

@@ -389,7 +389,7 @@ public:
       if (ca.status == Corner::inside && cb.status == Corner::inside && certified({a, b}, in_leaves)) continue;
       ends.clear();
       m_search.free_ends(lattice_segment(a, b), m_directions, m_fp.number_of_directions, ends,
-                         {ca.witness, cb.witness});
+                         {{ca.witness, cb.witness}, ca.status == Corner::free || cb.status == Corner::free});
       info.has_ends = !ends.empty();
       info.narrow = add_ends(a, b, ends, {}, false);
       if (info.has_ends && m_lattice.on_border(a, b)) m_border.emplace_back(ab, ends);
@@ -420,8 +420,8 @@ public:
       Vec3<Exact_nt> inward;
       for (int c = 0; c < 3; ++c) inward[c] = point(o).X[c] * s.a.W - s.a.X[c] * point(o).W;
       ends.clear();
-      m_search.free_ends(s, m_directions, m_fp.number_of_directions, ends, {m_corner(a).witness, m_corner(b).witness},
-                         &inward);
+      m_search.free_ends(s, m_directions, m_fp.number_of_directions, ends, {{m_corner(a).witness, m_corner(b).witness}},
+                         &inward); // (an end free along the directions may be hidden on the inward side)
       add_ends(a, b, ends, known, true);
     }
   }
