@@ -21,10 +21,11 @@
 // another: the advancing front's are facets of one 3D Delaunay triangulation of the points'
 // double positions (CGAL's, exact predicates), which meet only in shared corners and sides;
 // so the crossings are searched among the filling triangles and those whose boxes meet
-// theirs (a third of the reconstruction's time on the suite's rows went to searching all). Shells smaller than d (bubbles closed on a few
-// points beside a crease) are removed. Where the result still fails a check,
-// point_minkowski_sum_mesh() tries the same points plane by plane (plane_triangulation.h),
-// through the same repairs and checks (mesh_from_triangles()), then refines.
+// theirs (searching all took 10-30% of the reconstruction on the suite's rows). Shells
+// smaller than d (bubbles closed on a few points beside a crease) are removed. Where the
+// result still fails a check, point_minkowski_sum_mesh() tries the same points plane by plane
+// (plane_triangulation.h), through the same repairs and checks (mesh_from_triangles()), then
+// refines.
 
 #ifndef CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
 #define CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H

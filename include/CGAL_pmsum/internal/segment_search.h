@@ -125,8 +125,8 @@ struct Known_ends
   /// Item pairs known to cross at a and at b (the end is inside the sum), tried first.
   std::array<std::optional<std::pair<Index, Index>>, 2> witnesses;
   /// Is an end known free (a lattice point the CD filter found on the boundary)? Then the
-  /// segment is not covered, and no quick exit is tried (each is an exact proof that it is,
-  /// so skipping them changes no answer; on the hooks they cost half of the search).
+  /// segment is not covered, and no quick exit is tried (each is an exact proof that it is:
+  /// skipping them changes no answer).
   bool an_end_free = false;
 };
 
