@@ -527,6 +527,37 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   CHECK(std::abs(CGAL::Polygon_mesh_processing::volume(m) - 1.5 * 1.25 * 1.5) < 0.05);
 }
 
+TEST_CASE("mesh of a sum in an exact kernel: valid, every vertex exactly on a face of the sum", "[applications][mesh]")
+{
+  // (Its vertices are not the doubles the advancing front triangulated: every triangle is
+  // searched for crossings, not only those that fill holes.)
+  using EMesh = CGAL::Surface_mesh<EK::Point_3>;
+  const EMesh P = to_mesh<EMesh>(box({0, 0, 0}, {1, 1, 1})), Q = to_mesh<EMesh>(box({0, 0, 0}, {0.5, 0.25, 0.5}));
+  EMesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::point_minkowski_sum_mesh(P, Q, 0.1, m, CGAL::parameters::mesh_statistics(ms));
+  const auto c = CGAL::Pmsum::check_mesh(m);
+  REQUIRE(c.valid());
+  CHECK(c.shells == 1);
+  CHECK(ms.vertices == vertices(m).size());
+  const EK::FT hi[3] = {EK::FT(1.5), EK::FT(1.25), EK::FT(1.5)};
+  std::size_t off_faces = 0;
+  for (auto v : vertices(m)) {
+    const EK::Point_3& x = m.point(v);
+    bool inside = true, on_face = false;
+    for (int k = 0; k < 3; ++k) {
+      inside = inside && x[k] >= 0 && x[k] <= hi[k];
+      on_face = on_face || x[k] == 0 || x[k] == hi[k];
+    }
+    off_faces += !(inside && on_face);
+  }
+  CHECK(off_faces == 0);
+  // inside the box (its corners on its surface), missing at most the corners' slivers
+  const EK::FT volume = CGAL::Polygon_mesh_processing::volume(m);
+  CHECK(volume <= EK::FT(1.5 * 1.25 * 1.5));
+  CHECK(volume > EK::FT(2.7));
+}
+
 TEST_CASE("mesh of a sum: the same mesh with one thread or two, run after run", "[applications][mesh]")
 {
   // The reconstruction meets many equal priorities (cospherical lattice points on flat faces,
