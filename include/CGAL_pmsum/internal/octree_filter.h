@@ -87,7 +87,7 @@ public:
   /// `comm` (collective) if not null.
   Distance_grid(const Mesh_data& M, const Point3& lo, const Point3& hi, int resolution, double tolerance,
                 std::size_t max_balls, bool parallel, Communicator* comm)
-    : m_lo(lo), m_tol(tolerance)
+    : m_lo(lo), m_tol(tolerance), m_box(mesh_box(M))
   {
     const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
     m_s = extent / resolution;
@@ -161,7 +161,15 @@ public:
   /// point closest to g, gives an upper bound.
   bool closer_than(const Point3& z, double bound) const
   {
-    if (m_closest.empty()) return false;
+    if (m_closest.empty() || !(bound > 0)) return false;
+    // The solid lies in the mesh's box, so z is no closer than that box: this drops most of
+    // the interior certificate's tries (a ball far from the other mesh) without a lookup.
+    double outside = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double e = (std::max)({m_box.first[c] - z[c], z[c] - m_box.second[c], 0.0});
+      outside += e * e;
+    }
+    if (outside > bound * bound * (1 + 1e-9)) return false;
     std::array<int, 3> k;
     for (int c = 0; c < 3; ++c) {
       const double f = std::floor((z[c] - m_lo[c]) / m_s);
@@ -288,6 +296,7 @@ private:
 
   Point3 m_lo{};
   double m_s = 0, m_tol = 0;
+  std::pair<Point3, Point3> m_box;     // of the mesh's vertices
   std::array<int, 3> m_n{};
   std::vector<std::uint8_t> m_inside;  // grid point inside a closed component (exact parity)
   std::vector<double> m_radius;        // inside: a lower bound of its distance to the surface
