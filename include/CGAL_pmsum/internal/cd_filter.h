@@ -186,6 +186,11 @@ struct Crossing_slabs
     Where where(const std::array<Vec3<Interval>, 3>& T) const
     {
       const auto [tl, th] = extent(w, T);
+      return where(tl, th);
+    }
+    /// Where a set of translations t with tl <= w.t <= th lies with respect to this slab.
+    Where where(double tl, double th) const
+    {
       if (th < lo.inf() || tl > hi.sup()) return Where::outside;
       return tl > lo.sup() && th < hi.inf() ? Where::inside : Where::border;
     }

@@ -139,7 +139,7 @@ public:
       }
     m_found.reset();
     m_leaves.clear();
-    search(whole, border);
+    search(whole, border, corner_values(border));
     if (m_leaves.empty()) return {};
     ++m_cells;
     search_lines(whole);
@@ -207,15 +207,45 @@ private:
     Plane_pair* plane;
   };
 
+  /// w.x at the corners x of a sub-cell (enclosures), for one slab w of a pair.
+  using Corner_values = std::array<Interval, 3>;
+
+  /// The values at the current cell's corners of the slabs of `pairs`, pair after pair.
+  std::vector<Corner_values> corner_values(const std::vector<std::uint32_t>& pairs) const
+  {
+    std::vector<Corner_values> r;
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (std::uint32_t i : pairs)
+      for (const Crossing_slabs::Slab& slab : m_pairs[i].slabs.slabs)
+        r.push_back({dot(slab.w, m_e[0]), dot(slab.w, m_e[1]), dot(slab.w, m_e[2])});
+    return r;
+  }
+
+  /// S with the enclosures of its corners.
+  Sub_cell with_enclosures(Sub_cell S) const
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const Interval scale = Interval(1) / Interval(double(std::int64_t(1) << S.depth));
+    for (int k = 0; k < 3; ++k)
+      for (int x = 0; x < 3; ++x) {
+        Interval v(0);
+        for (int j = 0; j < 3; ++j) v += Interval(double(S.corner[k][j])) * m_e[j][x];
+        S.e[k][x] = v * scale;
+      }
+    return S;
+  }
+
   /// Puts into m_leaves the sub-cells of S (whose `pairs` may have their crossing sets'
   /// borders in S) where an island's edge can be: S is halved while shallower than
   /// max_depth, dropping the sub-cells that one pair covers or that no border meets (no
-  /// island's edge lies there: see the file comment).
-  void search(const Sub_cell& S, const std::vector<std::uint32_t>& pairs)
+  /// island's edge lies there: see the file comment). `values`: the pairs' slabs at S's
+  /// corners (corner_values()); w.x is affine in x, so at the middle of a side it is the
+  /// mean of its ends' (intervals: additions, no product).
+  void search(const Sub_cell& S, const std::vector<std::uint32_t>& pairs, const std::vector<Corner_values>& values)
   {
     // Halving helps only the pairs whose crossing sets' slabs are known (not bare edges).
     const bool known = std::any_of(pairs.begin(), pairs.end(), [&](std::uint32_t i) { return m_pairs[i].slabs.known; });
-    if (S.depth == max_depth || !known) { m_leaves.push_back({S, pairs}); return; }
+    if (S.depth == max_depth || !known) { m_leaves.push_back({with_enclosures(S), pairs}); return; }
     const auto& c = S.corner;
     auto mid = [&](int i, int j) {
       return std::array<std::int64_t, 3>{c[i][0] + c[j][0], c[i][1] + c[j][1], c[i][2] + c[j][2]};
@@ -224,28 +254,54 @@ private:
     const auto m01 = mid(0, 1), m12 = mid(1, 2), m20 = mid(2, 0);
     const std::array<std::array<std::array<std::int64_t, 3>, 3>, 4> children = {
       {{twice(0), m01, m20}, {m01, twice(1), m12}, {m20, m12, twice(2)}, {m01, m12, m20}}};
-    std::vector<std::uint32_t> kept;
-    for (const auto& child : children) {
-      Sub_cell C{child, S.depth + 1, {}};
-      kept.clear();
-      bool covered = false;
-      {
-        CGAL::Protect_FPU_rounding<true> guard;
-        const Interval scale = Interval(1) / Interval(double(std::int64_t(1) << C.depth));
-        for (int k = 0; k < 3; ++k)
-          for (int x = 0; x < 3; ++x) {
-            Interval v(0);
-            for (int j = 0; j < 3; ++j) v += Interval(double(child[k][j])) * m_e[j][x];
-            C.e[k][x] = v * scale;
-          }
-        for (std::uint32_t i : pairs) {
-          const Where w = m_pairs[i].slabs.where(C.e);
-          if (w == Where::inside) { covered = true; break; }
-          if (w == Where::border) kept.push_back(i);
-        }
-      }
-      if (!covered && !kept.empty()) search(C, kept);
+    // The children's corners among S's corners (0, 1, 2) and the middles of its sides 01, 12, 20 (3, 4, 5).
+    static constexpr std::array<std::array<int, 3>, 4> picks = {{{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
+    std::vector<std::array<Interval, 6>> at; // the slabs' values at those six points
+    at.reserve(values.size());
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      for (const Corner_values& v : values)
+        at.push_back({v[0], v[1], v[2], (v[0] + v[1]) * 0.5, (v[1] + v[2]) * 0.5, (v[2] + v[0]) * 0.5});
     }
+    std::vector<std::uint32_t> kept;
+    std::vector<Corner_values> kept_values;
+    for (int n = 0; n < 4; ++n) {
+      kept.clear();
+      kept_values.clear();
+      bool covered = false;
+      std::size_t first = 0; // the pair's first slab in `at`
+      for (std::uint32_t i : pairs) {
+        const Crossing_slabs& slabs = m_pairs[i].slabs;
+        const Where w = where(slabs, at.data() + first, picks[n]);
+        if (w == Where::inside) { covered = true; break; }
+        if (w == Where::border) {
+          kept.push_back(i);
+          for (std::size_t s = first; s < first + slabs.slabs.size(); ++s)
+            kept_values.push_back({at[s][picks[n][0]], at[s][picks[n][1]], at[s][picks[n][2]]});
+        }
+        first += slabs.slabs.size();
+      }
+      if (!covered && !kept.empty()) search(Sub_cell{children[n], S.depth + 1, {}}, kept, kept_values);
+    }
+  }
+
+  /// Crossing_slabs::where() on the triangle whose corners are the points `corners` of
+  /// `at` (the slabs' values there, slab after slab).
+  static Where where(const Crossing_slabs& slabs, const std::array<Interval, 6>* at, const std::array<int, 3>& corners)
+  {
+    if (!slabs.known) return Where::border;
+    bool inside = true;
+    for (std::size_t s = 0; s < slabs.slabs.size(); ++s) {
+      double tl = HUGE_VAL, th = -HUGE_VAL;
+      for (int k : corners) {
+        tl = (std::min)(tl, at[s][k].inf());
+        th = (std::max)(th, at[s][k].sup());
+      }
+      const Where w = slabs.slabs[s].where(tl, th);
+      if (w == Where::outside) return w;
+      inside = inside && w == Where::inside;
+    }
+    return inside ? Where::inside : Where::border;
   }
 
   /// A point on the border of the cell: parameter l of edge k (from corner k to k + 1).
