@@ -217,10 +217,17 @@ struct Crossing_slabs
   /// Needs rounding towards +infinity.
   Where where(const std::array<Vec3<Interval>, 3>& T) const
   {
+    return where_by([&](std::size_t s) { return extent(slabs[s].w, T); });
+  }
+  /// where() of a set whose extent along slab s's axis is extent(s) (a pair: low, high).
+  template <class Extent>
+  Where where_by(const Extent& extent) const
+  {
     if (!known) return Where::border;
     bool inside = true;
-    for (const Slab& s : slabs) {
-      const Where w = s.where(T);
+    for (std::size_t s = 0; s < slabs.size(); ++s) {
+      const auto [tl, th] = extent(s);
+      const Where w = slabs[s].where(tl, th);
       if (w == Where::outside) return w;
       inside = inside && w == Where::inside;
     }

@@ -289,19 +289,14 @@ private:
   /// `at` (the slabs' values there, slab after slab).
   static Where where(const Crossing_slabs& slabs, const std::array<Interval, 6>* at, const std::array<int, 3>& corners)
   {
-    if (!slabs.known) return Where::border;
-    bool inside = true;
-    for (std::size_t s = 0; s < slabs.slabs.size(); ++s) {
+    return slabs.where_by([&](std::size_t s) {
       double tl = HUGE_VAL, th = -HUGE_VAL;
       for (int k : corners) {
         tl = (std::min)(tl, at[s][k].inf());
         th = (std::max)(th, at[s][k].sup());
       }
-      const Where w = slabs.slabs[s].where(tl, th);
-      if (w == Where::outside) return w;
-      inside = inside && w == Where::inside;
-    }
-    return inside ? Where::inside : Where::border;
+      return std::make_pair(tl, th);
+    });
   }
 
   /// A point on the border of the cell: parameter l of edge k (from corner k to k + 1).
