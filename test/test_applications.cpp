@@ -1,5 +1,6 @@
 // Applications: offset and erosion against exact answers.
 #include "test_support.h"
+#include "suite_shapes.h"
 
 #include <CGAL_pmsum/point_offset.h>
 
@@ -968,6 +969,53 @@ TEST_CASE("mesh of a sum with a void: two shells, the void inward, within d of t
   CHECK(dist.surface_to_mesh < d);
   // the volume: the shell's minus the void's, up to the chords cut across the edges
   CHECK(std::abs(CGAL::Polygon_mesh_processing::volume(m) - (std::pow(3.25, 3) - std::pow(0.75, 3))) < 0.3);
+}
+
+TEST_CASE("has_false_void: a void of the mesh that opens onto another shell through free space",
+          "[applications][mesh]")
+{
+  // The hollow box [0, 4]^3 (walls 0.5, each pierced by a window of side 1) plus the cube of
+  // half-side c: for c > 0.5 the windows close and [0.5 + c, 3.5 - c]^3 is a void of the sum;
+  // for c = 0.25 they stay open (0.5 wide) and the cavity [0.75, 3.25]^3 is not a void. With
+  // the block [1.9, 2.1]^3 in the cavity and c = 0.6, the void holds the solid [1.3, 2.7]^3
+  // (0.2 from its walls). Each mesh: those boxes (the cavity's turned inward), each with a
+  // vertex added on its top in the window's column (x, y) = (2.1, 1.95).
+  using namespace CGAL::Pmsum::internal;
+  auto box_shell = [](double lo, double hi, bool inward) {
+    Mesh m = to_mesh<Mesh>(box({lo, lo, lo}, {hi, hi, hi}));
+    const IK::Point_2 top(2.1, 1.95);
+    for (auto f : faces(m)) {
+      const auto h = halfedge(f, m);
+      std::vector<IK::Point_3> t;
+      for (auto v : vertices_around_face(h, m)) t.push_back(m.point(v));
+      if (t[0].z() != hi || t[1].z() != hi || t[2].z() != hi) continue;
+      const IK::Triangle_2 tri({t[0].x(), t[0].y()}, {t[1].x(), t[1].y()}, {t[2].x(), t[2].y()});
+      if (!tri.has_on_bounded_side(top)) continue;
+      const auto spoke = CGAL::Euler::add_center_vertex(h, m);
+      m.point(target(spoke, m)) = IK::Point_3(top.x(), top.y(), hi);
+      break;
+    }
+    REQUIRE(m.number_of_vertices() == 9);
+    if (inward) CGAL::Polygon_mesh_processing::reverse_face_orientations(m);
+    return m;
+  };
+  struct Case { double c; bool island, false_void; };
+  for (const Case k : {Case{0.75, false, false}, Case{0.25, false, true}, Case{0.6, true, false}}) {
+    const double c = k.c;
+    Soup q = pmsum_shapes::hollow_box_with_windows(4, 0.5, 1);
+    if (k.island) q.append(box({1.9, 1.9, 1.9}, {2.1, 2.1, 2.1}));
+    const auto operands = cd_operands(box({-c, -c, -c}, {c, c, c}), q);
+    const Cd_geometry geometry(operands.first, operands.second);
+    Cd_filter filter(&geometry);
+    Segment_search search(filter);
+    Mesh m = box_shell(-c, 4 + c, false);
+    m.join(box_shell(0.5 + c, 3.5 - c, true));
+    if (k.island) m.join(box_shell(1.9 - c, 2.1 + c, false));
+    const auto checks = CGAL::Pmsum::check_mesh(m);
+    REQUIRE(checks.valid());
+    REQUIRE(checks.void_shells == 1);
+    CHECK(has_false_void(m, search) == k.false_void);
+  }
 }
 
 TEST_CASE("mesh of a thin part: the advancing front, or plane by plane", "[applications][mesh]")

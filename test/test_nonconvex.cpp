@@ -31,16 +31,6 @@ std::size_t count_in(const std::vector<IK::Point_3>& pts, const Point& lo, const
   return n;
 }
 
-/// P (negated) and Q as the CD filter takes them.
-std::pair<CGAL::Pmsum::internal::Mesh_data, CGAL::Pmsum::internal::Mesh_data> cd_operands(const Soup& ps, const Soup& qs)
-{
-  using namespace CGAL::Pmsum::internal;
-  const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
-  Mesh_descriptors<Mesh> dp, dq;
-  return {make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp),
-          make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq)};
-}
-
 } // namespace
 
 TEST_CASE("L-shape + cube is a union of two boxes", "[nonconvex]")

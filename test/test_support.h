@@ -56,6 +56,17 @@ struct Result
 };
 
 /// `np` must start with a CGAL_pmsum parameter (they chain `statistics`).
+/// P (negated) and Q as the CD filter of their sum takes them.
+inline std::pair<CGAL::Pmsum::internal::Mesh_data, CGAL::Pmsum::internal::Mesh_data> cd_operands(const Soup& ps,
+                                                                                              const Soup& qs)
+{
+  using namespace CGAL::Pmsum::internal;
+  const Mesh pm = to_mesh<Mesh>(ps), qm = to_mesh<Mesh>(qs);
+  Mesh_descriptors<Mesh> dp, dq;
+  return {make_mesh_data(pm, get(CGAL::vertex_point, pm), true, false, "P", dp),
+          make_mesh_data(qm, get(CGAL::vertex_point, qm), false, false, "Q", dq)};
+}
+
 template <class NP = decltype(CGAL::parameters::use_normal_filter(true))>
 Result run(const Soup& P, const Soup& Q, double d, const NP& np = CGAL::parameters::use_normal_filter(true))
 {

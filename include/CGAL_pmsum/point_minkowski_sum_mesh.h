@@ -30,6 +30,7 @@
 #include <CGAL_pmsum/check_mesh.h>
 #include <CGAL_pmsum/internal/mesh_left_out_points.h>
 #include <CGAL_pmsum/internal/mesh_reconstruction.h>
+#include <CGAL_pmsum/internal/mesh_voids.h>
 #include <CGAL_pmsum/internal/plane_triangulation.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
@@ -158,7 +159,8 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
-/// no connected part of the sum split (splits_a_part()), the points' distance to the mesh and the
+/// no connected part of the sum split (splits_a_part()), no void the sum does not have
+/// (has_false_void()), the points' distance to the mesh and the
 /// mesh's to the points (mesh_distance_bound())); if a check fails, d is halved, twice at
 /// most, at d/2 first with the points on sharp creases kept, then
 /// without, at d/4 without them, then with (see `levels`), reusing the coarser decisions; then
@@ -249,8 +251,15 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // (one outer shell: one volume, nothing to split)
       const bool split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 &&
                          splits_a_part(mesh, positions, part);
-      if (ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
-          ms.mesh_to_boundary_bound < dl && !across) {
+      const bool passed = ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
+                          ms.mesh_to_boundary_bound < dl && !across;
+      // Last (it searches segments): a void that the sum does not have (mesh_voids.h).
+      const bool false_void = passed && ms.checks.void_shells > 0 && geometry && [&] {
+        Cd_filter filter(geometry);
+        Segment_search search(filter);
+        return has_false_void(mesh, search);
+      }();
+      if (passed && !false_void) {
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
         ms.by_planes = way == 1;
@@ -259,7 +268,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
                   (creases ? " with the crease points" : level.again ? " without them" : "") +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
-                  (across ? "closed a hole over empty space" : level_failure(ms, split));
+                  (across       ? "closed a hole over empty space"
+                   : false_void ? "made a void that the sum does not have (a passage narrower than that d closed)"
+                                : level_failure(ms, split));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
   }
@@ -278,7 +289,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// bounds a volume (outer shells outward, voids inward), it never splits a connected part of
 /// the sum (the sum of a solid of `P` and a solid of `Q`, components that touch and a void with
 /// its container counting as one solid: the output points of such a part all lie on one
-/// outer shell and its voids), every output point
+/// outer shell and its voids), none of its voids opens onto another shell through free space
+/// (an exact segment test from the void's vertices nearest to another shell: a passage
+/// narrower than `d` that the reconstruction closed), every output point
 /// of the sum lies closer than `d'` to it and every point of it closer than `d'` to an output
 /// point (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
