@@ -16,9 +16,9 @@
 // axes where it touches the boundary), a and b are on the border of one component of the free
 // space, so V does not enclose a component of its own: the sum has no such void, unless b's
 // shell lies inside V itself (a solid island in the void: it bounds the same free space, and is
-// never taken as b). (The mesh's
-// vertices are output points, on the exact boundary; with an exact kernel they are rounded to
-// doubles here, which can only hide a refutation: a rounded end inside the sum is not free.)
+// never taken as b). (The mesh's vertices are output points, on the exact boundary; with an
+// exact kernel they are rounded to doubles here, which can only hide a refutation: a rounded
+// end inside the sum is not free.)
 // A true void is never refuted; a false one is refuted where a tested segment runs along the
 // passage: for each vertex of V, the nearest vertex of another shell is a candidate, and the
 // nearest candidates are tested first (a few per void).
@@ -41,9 +41,10 @@ namespace Pmsum {
 namespace internal {
 
 /// Is the open segment from a to b outside the sum (Segment_search::free_ends(): one free
-/// part, from 0 to 1)?
+/// part, from 0 to 1)? False if a = b.
 inline bool free_segment(Segment_search& search, const Position& a, const Position& b)
 {
+  if (a == b) return false;
   auto exact = [](const Position& x) {
     return Exact_point{{Exact_nt(x[0]), Exact_nt(x[1]), Exact_nt(x[2])}, Exact_nt(1)};
   };
