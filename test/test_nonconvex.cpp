@@ -74,6 +74,11 @@ TEST_CASE("flat faces cut into many triangles are triangulated again without the
       CHECK(m.components.size() == 1);
       CHECK(!merge_planar_patches(m.points, m.triangles)); // nothing left to merge
     }
+}
+
+TEST_CASE("flat faces cut into many triangles: the sums stay exact and covering, at the uncut shapes' cost",
+          "[nonconvex][input][long]")
+{
   // The sums (merged by default) stay exact and covering, with or without -P, and cost about
   // what the uncut shapes cost.
   const Soup L = subdivided(l_shape(), 2), B = subdivided(box({0, 0, 0}, {0.5, 0.5, 0.5}), 2);
