@@ -161,8 +161,9 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), no void the sum does not have
 /// (has_false_void()), the points' distance to the mesh and the
-/// mesh's to the points (mesh_distance_bound())); if a check fails, d is halved, twice at
-/// most, at d/2 first with the points on sharp creases kept, then
+/// mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
+/// with the trim curves searched wherever they are (not only where the covering needs them),
+/// then d is halved, twice at most, at d/2 first with the points on sharp creases kept, then
 /// without, at d/4 without them, then with (see `levels`), reusing the coarser decisions; then
 /// Mesh_reconstruction_failed, which says why each level was refused.
 /// `stats` receives each level's counters (ms.sum the last one's); `start` is when the input
@@ -174,15 +175,21 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
   using Point = typename boost::property_traits<
     typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  // The levels: d, then d/2 keeping the points on sharp creases (they help a corner or a
-  // strip far narrower than d), then d/2 again without them (a hair smaller: coarse to fine
-  // needs a smaller d; rows of crease points beside the faces' rows may hurt the advancing
-  // front), then d/4, then d/4 again with them (last: the one level that costs only inputs
-  // every other level fails; a grate plus a tiny tetrahedron is meshed plane by plane there).
-  struct Level { int halvings; Creases creases; bool again; };
-  const Level levels[] = {{0, Creases::as_covering_needs, false}, {1, Creases::sharp_kept, false},
-                          {1, Creases::as_covering_needs, true}, {2, Creases::as_covering_needs, false},
-                          {2, Creases::sharp_kept, true}};
+  // The levels: d with the trim search the covering needs, then d again (a hair smaller:
+  // coarse to fine needs a smaller d) with the trim curves searched in every cell with a
+  // corner inside (a hole in a face narrower than d, a narrow tunnel's mouth, is closed
+  // without them), then d/2 keeping the points on sharp creases (they help a corner or a
+  // strip far narrower than d), then d/2 again without them (rows of crease points beside
+  // the faces' rows may hurt the advancing front), then d/4, then d/4 again with them (last:
+  // the one level that costs only inputs every other level fails; a grate plus a tiny
+  // tetrahedron is meshed plane by plane there). From d/2 on, narrow strips are followed.
+  struct Level { int halvings; Creases creases; bool again; Strips strips; };
+  const Level levels[] = {{0, Creases::as_covering_needs, false, Strips::as_covering_needs},
+                          {0, Creases::as_covering_needs, true, Strips::inside_corners},
+                          {1, Creases::sharp_kept, false, Strips::followed},
+                          {1, Creases::as_covering_needs, true, Strips::followed},
+                          {2, Creases::as_covering_needs, false, Strips::followed},
+                          {2, Creases::sharp_kept, true, Strips::followed}};
   const Sum_parts parts(mp, mq);
   std::string failures;
   for (const Level& level : levels) {
@@ -205,7 +212,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w, const Mesh_data&, Index) {
           for (const Vec3<double>& n : w) crease_planes.emplace_back(points.size() - 1, Epick::Vector_3(n[0], n[1], n[2]));
         });
-    }, start, level.halvings == 0 ? Strips::as_covering_needs : Strips::followed, level.creases);
+    }, start, level.strips, level.creases);
     start = Clock::now();
     ms.sum = stats;
     ms.seconds_sum += seconds_since(t_sum);
@@ -266,7 +273,10 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         return;
       }
       failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
-                  (creases ? " with the crease points" : level.again ? " without them" : "") +
+                  (creases                                  ? " with the crease points"
+                   : level.strips == Strips::inside_corners ? " with every trim cell searched"
+                   : level.again                            ? " without them"
+                                                            : "") +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
                   (across       ? "closed a hole over empty space"
                    : false_void ? "made a void that the sum does not have (a passage narrower than that d closed)"

@@ -113,6 +113,23 @@ public:
     return false;
   }
 
+  /// Is one point of the net closer than r <= d to each of the points xs (rounded)? Then it
+  /// is closer than r to every point of their convex hull (a ball is convex).
+  bool covers_all(const std::array<Point3, 3>& xs, double r) const
+  {
+    const double rr = r - m_margin;
+    if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
+    // Cells have side d: the ball of radius r around xs[0] meets the 27 cells around its own.
+    const std::array<std::int64_t, 3> c = cell_of(xs[0]);
+    for (int o = 0; o < 27; ++o) {
+      const std::uint32_t first = m_cells.find(key({c[0] + o % 3 - 1, c[1] + o / 3 % 3 - 1, c[2] + o / 9 - 1}));
+      for (std::uint32_t n = first; n != none; n = m_next[n])
+        if (std::all_of(xs.begin(), xs.end(), [&](const Point3& x) { return dot(x - m_points[n], x - m_points[n]) < rr * rr; }))
+          return true;
+    }
+    return false;
+  }
+
   /// Is a point of the net that does not face x closer than d/2 to it?
   bool covers(const Point3& x, const Normals& normals = {}) const { return covers_within(x, m_d / 2, normals); }
 

@@ -304,7 +304,10 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
     for (int i = 0; i < 3; ++i) centre[i] = 0.5 * (lo[i] + hi[i]);
     return c.octree->certifies_ball(centre, 0.5 * std::sqrt(dot(hi - lo, hi - lo)), &hint);
   };
-  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, c.strips, corner, certified, search, c.islands ? &islands : nullptr, out.trims);
+  // Covered whole: closer than d to a point of the net (of the earlier waves: final).
+  auto covered = [&](const std::array<Point3, 3>& cell) { return c.net && c.net->covers_all(cell, c.d); };
+  find_trim_points(lattice, P, Q, *c.pairs, fp, c.d, c.strips, corner, certified, covered, search,
+                   c.islands ? &islands : nullptr, out.trims);
   counters.island_cells += islands.searched_cells();
   counters.trim_segments += search.searched_segments();
   counters.trim_points += out.trims.size() - before;

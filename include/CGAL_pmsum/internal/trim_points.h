@@ -19,13 +19,18 @@
 // it, so y has an output point closer than d. Hence: the edges of every cell with a corner
 // known to be inside (tested, certified or reused) are searched. A cell whose corners are
 // all free or covered needs nothing: its points are within f(T) <= d/2 of a corner, and
-// that corner within d/2 of an output point. (Islands, pieces of F strictly inside one
-// cell, are bounded by trim curves only; they are not found this way but by the island
-// search, island_search.h, in the cells with an inside corner whose edges have no trim point.)
+// that corner within d/2 of an output point. Nor does a cell whose three corners are closer
+// than d to one output point already chosen (of an earlier wave: decision.h): a ball is
+// convex, so that point covers the whole cell, whatever is visible in it; its corners are not
+// even tested. (Islands, pieces of F strictly inside one cell, are bounded by trim curves
+// only; they are not found this way but by the island search, island_search.h, in the
+// selected cells whose edges have no trim point.)
 //
 // Not needed for the covering, but for a mesh: where a strip of F narrower than d/2 meets
 // the border of F (a narrow tunnel's wall meeting the top face), the corner is a trim point
 // kept whatever is near (no other point stands for it); see Facet_trim_search::search_border_corners().
+// (Found in the searched cells only: where the covering skips a covered cell, a mesh may
+// need them, and asks for every cell with a corner inside, Strips::inside_corners or followed.)
 
 #ifndef CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
 #define CGAL_PMSUM_INTERNAL_TRIM_POINTS_H
@@ -324,11 +329,14 @@ private:
   double m_diameter = 0;
 };
 
-/// How far the trim search follows a strip of a facet narrower than d/2: where the covering
-/// needs it (cells with a corner known inside), or also through the cells with an untested
-/// corner, to the strip's ends (a mesh needs both edges' rows to where the strip meets
-/// another face; more points, and more searched segments, on sums with many narrow strips).
-enum class Strips : std::uint8_t { as_covering_needs, followed };
+/// Which cells the trim search searches: where the covering needs it (cells with a corner
+/// known inside that no output point covers whole); every cell with a corner known inside (a
+/// mesh needs the trim curves around a hole in a face narrower than d, which the points
+/// around it cover); or also, following each strip of a facet narrower than d/2, the cells
+/// with an untested corner, to the strip's ends (a mesh needs both edges' rows to where the
+/// strip meets another face; more points, and more searched segments, on sums with many
+/// narrow strips).
+enum class Strips : std::uint8_t { as_covering_needs, inside_corners, followed };
 
 /// What is known of a lattice point when the trim search starts: its status, and for an
 /// inside one, the item pair whose crossing decided it, or its certified octree leaf.
@@ -344,27 +352,31 @@ struct Corner_info
 /// cells with a corner `inside` and their segments; the segments' free parts (following
 /// narrow strips, with Strips::followed); the corners where narrow strips meet the facet's
 /// border; the islands. Trim points are appended to `out` in a canonical order.
-template <class CornerInfo, class Certified>
+template <class CornerInfo, class Certified, class Covered>
 class Facet_trim_search
 {
 public:
   Facet_trim_search(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q, const Candidate_pairs& pairs,
                     const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
-                    const Certified& certified_box, Segment_search& search, std::vector<Trim_point>& out)
+                    const Certified& certified_box, const Covered& covered, Segment_search& search,
+                    std::vector<Trim_point>& out)
     : m_lattice(lattice), m_p(P), m_q(Q), m_fp(fp), m_d(d), m_strips(strips), m_corner(corner),
-      m_certified_box(certified_box), m_search(search), m_out(out),
+      m_certified_box(certified_box), m_covered(covered), m_search(search), m_out(out),
       m_directions(pairs.directions.data() + fp.first_direction),
       m_radius((std::max)(0., d - lattice.diameter())), m_searched_cell(lattice.cells().size(), false),
       m_exact(lattice.size()), m_rounded(lattice.size())
   {}
 
-  /// Selects the cells with a corner inside and their segments, in a canonical order.
-  /// Returns: is there any?
+  /// Selects the cells with a corner inside, and their segments, in a canonical order; with
+  /// Strips::as_covering_needs, not those an output point covers whole. Returns: is there any?
   bool select_cells()
   {
     for (std::size_t i = 0; i < m_lattice.cells().size(); ++i) {
+      const auto& cell = m_lattice.cells()[i];
+      if (m_strips == Strips::as_covering_needs && m_covered({position(cell[0]), position(cell[1]), position(cell[2])}))
+        continue; // (its corners untested)
       bool inside = false;
-      for (std::uint32_t c : m_lattice.cells()[i]) inside = inside || m_corner(c).status == Corner::inside;
+      for (std::uint32_t c : cell) inside = inside || m_corner(c).status == Corner::inside;
       if (inside) search_cell(i);
     }
     std::sort(m_to_search.begin(), m_to_search.end());
@@ -571,6 +583,7 @@ private:
   Strips m_strips;
   const CornerInfo& m_corner;
   const Certified& m_certified_box;
+  const Covered& m_covered;
   Segment_search& m_search;
   std::vector<Trim_point>& m_out;
   const Direction* m_directions;
@@ -594,13 +607,14 @@ private:
 /// inside the sum (by octree leaves; `ball`: also by the certificate's balls, costlier, for
 /// cells and for segments between two certified leaves), or a segment's ends lie in one
 /// certified octree leaf.
-template <class CornerInfo, class Certified>
+template <class CornerInfo, class Certified, class Covered>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
-                      const Certified& certified_box, Segment_search& search, Island_search* islands,
-                      std::vector<Trim_point>& out)
+                      const Certified& certified_box, const Covered& covered, Segment_search& search,
+                      Island_search* islands, std::vector<Trim_point>& out)
 {
-  Facet_trim_search<CornerInfo, Certified> trim(lattice, P, Q, pairs, fp, d, strips, corner, certified_box, search, out);
+  Facet_trim_search<CornerInfo, Certified, Covered> trim(lattice, P, Q, pairs, fp, d, strips, corner, certified_box,
+                                                         covered, search, out);
   if (!trim.select_cells()) return;
   trim.search_segments();
   trim.search_border_corners();
