@@ -249,6 +249,56 @@ TEST_CASE("nearest-point tree: the same nearest distance as brute force", "[appl
   CHECK(same.nearest(q).second == 4);
 }
 
+TEST_CASE("covering net: covers_all finds a point closer than r to all three corners iff brute force does", "[applications][net]")
+{
+  using CGAL::Pmsum::internal::Point3;
+  const double d = 1;
+  auto squared = [](const Point3& x, const Point3& y) {
+    return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
+  };
+  CGAL::Random rng(11);
+  std::vector<Point3> random;
+  for (int i = 0; i < 3000; ++i) random.push_back({rng.get_double(-6, 6), rng.get_double(-6, 6), rng.get_double(-1, 1)});
+  CGAL::Pmsum::internal::Covering_net net(d, 8);
+  for (std::size_t i : CGAL::Pmsum::internal::greedy_net(random, d)) net.insert(random[i]);
+  REQUIRE(net.size() > 200);
+  // Random triangles (sides up to d): covered only if brute force finds a point closer than r
+  // to each corner, and not covered only if it finds none closer than r minus a rounding margin.
+  std::size_t found = 0, missed = 0, wrong = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const double r = i % 2 ? d : d / 2;
+    const Point3 a{rng.get_double(-6, 6), rng.get_double(-6, 6), rng.get_double(-1, 1)};
+    std::array<Point3, 3> t{a, a, a};
+    for (int k = 1; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) t[k][c] += rng.get_double(-0.5, 0.5) * d;
+    auto within = [&](const Point3& y, double s) {
+      return std::all_of(t.begin(), t.end(), [&](const Point3& x) { return squared(x, y) < s * s; });
+    };
+    if (net.covers_all(t, r)) {
+      ++found;
+      bool any = false;
+      for (std::size_t j = 0; j < net.size(); ++j) any = any || within(net.point(j), r);
+      wrong += !any;
+    } else {
+      for (std::size_t j = 0; j < net.size(); ++j) missed += within(net.point(j), r - 1e-12);
+    }
+  }
+  CHECK(wrong == 0);
+  CHECK(missed == 0);
+  CHECK(found > 400);
+  // At the edge: corners at 0.999 r of a point are covered by it, one at 1.001 r is not.
+  CGAL::Pmsum::internal::Covering_net one(d, 8);
+  const Point3 y{0.3, -0.2, 0.1};
+  one.insert(y);
+  auto at = [&](const Point3& unit, double s) { return Point3{y[0] + s * unit[0], y[1] + s * unit[1], y[2] + s * unit[2]}; };
+  const Point3 u{0.6, 0.8, 0}, v{0, 0.6, 0.8}, w{-0.8, 0, 0.6};
+  for (double s : {0.999, 1.001}) {
+    const std::array<Point3, 3> t{at(u, 0.999 * d), at(v, 0.999 * d), at(w, s * d)};
+    CHECK(one.covers_all(t, d) == (s < 1));
+  }
+  CHECK(!CGAL::Pmsum::internal::Covering_net(d, 8).covers_all({y, y, y}, d)); // an empty net covers nothing
+}
+
 TEST_CASE("penetration depth: nearest_contact is the nearest contact point", "[applications][pd]")
 {
   const Soup ps = random_convex(10, 21), qs = transformed(random_convex(12, 71), 0.8);
