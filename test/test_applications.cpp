@@ -253,9 +253,6 @@ TEST_CASE("covering net: covers_all finds a point closer than r to all three cor
 {
   using CGAL::Pmsum::internal::Point3;
   const double d = 1;
-  auto squared = [](const Point3& x, const Point3& y) {
-    return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
-  };
   CGAL::Random rng(11);
   std::vector<Point3> random;
   for (int i = 0; i < 3000; ++i) random.push_back({rng.get_double(-6, 6), rng.get_double(-6, 6), rng.get_double(-1, 1)});
@@ -272,7 +269,9 @@ TEST_CASE("covering net: covers_all finds a point closer than r to all three cor
     for (int k = 1; k < 3; ++k)
       for (int c = 0; c < 3; ++c) t[k][c] += rng.get_double(-0.5, 0.5) * d;
     auto within = [&](const Point3& y, double s) {
-      return std::all_of(t.begin(), t.end(), [&](const Point3& x) { return squared(x, y) < s * s; });
+      return std::all_of(t.begin(), t.end(), [&](const Point3& x) {
+        return CGAL::Pmsum::internal::squared_distance(x.data(), y.data()) < s * s;
+      });
     };
     if (net.covers_all(t, r)) {
       ++found;
