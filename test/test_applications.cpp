@@ -249,15 +249,22 @@ TEST_CASE("nearest-point tree: the same nearest distance as brute force", "[appl
   CHECK(same.nearest(q).second == 4);
 }
 
+/// The greedy net of spacing d/2 of 3,000 random points of a slab 12 x 12 x 2.
+static CGAL::Pmsum::internal::Covering_net random_net(double d, CGAL::Random& rng)
+{
+  std::vector<CGAL::Pmsum::internal::Point3> random;
+  for (int i = 0; i < 3000; ++i) random.push_back({rng.get_double(-6, 6), rng.get_double(-6, 6), rng.get_double(-1, 1)});
+  CGAL::Pmsum::internal::Covering_net net(d, 8);
+  for (std::size_t i : CGAL::Pmsum::internal::greedy_net(random, d)) net.insert(random[i]);
+  return net;
+}
+
 TEST_CASE("covering net: covers_all finds a point closer than r to all three corners iff brute force does", "[applications][net]")
 {
   using CGAL::Pmsum::internal::Point3;
   const double d = 1;
   CGAL::Random rng(11);
-  std::vector<Point3> random;
-  for (int i = 0; i < 3000; ++i) random.push_back({rng.get_double(-6, 6), rng.get_double(-6, 6), rng.get_double(-1, 1)});
-  CGAL::Pmsum::internal::Covering_net net(d, 8);
-  for (std::size_t i : CGAL::Pmsum::internal::greedy_net(random, d)) net.insert(random[i]);
+  const CGAL::Pmsum::internal::Covering_net net = random_net(d, rng);
   REQUIRE(net.size() > 200);
   // Random triangles (sides up to d): covered only if brute force finds a point closer than r
   // to each corner, and not covered only if it finds none closer than r minus a rounding margin.
@@ -296,6 +303,58 @@ TEST_CASE("covering net: covers_all finds a point closer than r to all three cor
     CHECK(one.covers_all(t, d) == (s < 1));
   }
   CHECK(!CGAL::Pmsum::internal::Covering_net(d, 8).covers_all({y, y, y}, d)); // an empty net covers nothing
+}
+
+TEST_CASE("covering net: covers_all_parts covers every point of the triangle, and more triangles than covers_all",
+          "[applications][net]")
+{
+  using CGAL::Pmsum::internal::Point3;
+  const double d = 1;
+  CGAL::Random rng(12);
+  const CGAL::Pmsum::internal::Covering_net net = random_net(d, rng);
+  std::vector<Point3> points;
+  for (std::size_t j = 0; j < net.size(); ++j) points.push_back(net.point(j));
+  // Is every point of a 24 x 24 barycentric grid of t closer than r to a point of the net?
+  auto brute_force = [&](const std::array<Point3, 3>& t, double r) {
+    const int n = 24;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        Point3 x;
+        for (int c = 0; c < 3; ++c) x[c] = (t[0][c] * (n - i - j) + t[1][c] * i + t[2][c] * j) / n;
+        if (std::none_of(points.begin(), points.end(), [&](const Point3& y) {
+              return CGAL::Pmsum::internal::squared_distance(x.data(), y.data()) < r * r;
+            }))
+          return false;
+      }
+    return true;
+  };
+  std::size_t parts = 0, whole = 0, wrong = 0, depth0 = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const Point3 a{rng.get_double(-5, 5), rng.get_double(-5, 5), rng.get_double(-1, 1)};
+    std::array<Point3, 3> t{a, a, a};
+    for (int k = 1; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) t[k][c] += rng.get_double(-1, 1) * d;
+    const bool by_parts = net.covers_all_parts(t, d, 2), by_one = net.covers_all(t, d);
+    depth0 += net.covers_all_parts(t, d, 0) != by_one;
+    CHECK((by_one <= by_parts)); // a triangle one point covers is covered in parts too
+    parts += by_parts;
+    whole += by_one;
+    if (by_parts) wrong += !brute_force(t, d);
+  }
+  CHECK(wrong == 0);
+  CHECK(depth0 == 0);
+  CHECK(parts > whole + 100);
+  // Two points 1.6 d apart: a thin triangle along them is covered by neither alone, by the two
+  // in parts cut three times (not twice); one with a corner 1.06 d from both is not.
+  CGAL::Pmsum::internal::Covering_net two(d, 8);
+  two.insert({0, 0, 0});
+  two.insert({1.6 * d, 0, 0});
+  const std::array<Point3, 3> thin{Point3{-0.5 * d, 0, 0}, Point3{2.1 * d, 0, 0}, Point3{0.8 * d, 0.1 * d, 0}};
+  CHECK(!two.covers_all(thin, d));
+  CHECK(!two.covers_all_parts(thin, d, 2));
+  CHECK(two.covers_all_parts(thin, d, 3));
+  const std::array<Point3, 3> far{Point3{-0.5 * d, 0, 0}, Point3{2.1 * d, 0, 0}, Point3{0.8 * d, 0.7 * d, 0}};
+  CHECK(!two.covers_all_parts(far, d, 6));
 }
 
 TEST_CASE("penetration depth: nearest_contact is the nearest contact point", "[applications][pd]")

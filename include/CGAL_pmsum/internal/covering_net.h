@@ -130,6 +130,19 @@ public:
     return false;
   }
 
+  /// Is each of the parts of triangle xs (cut into four at its sides' midpoints, again and
+  /// again, `depth` times at most) closer than r to one point of the net (covers_all())?
+  /// Then so is every point of the triangle.
+  bool covers_all_parts(const std::array<Point3, 3>& xs, double r, int depth) const
+  {
+    if (covers_all(xs, r)) return true;
+    if (depth == 0) return false;
+    auto mid = [&](int i, int j) { return scaled(xs[i] + xs[j], 0.5); };
+    const Point3 m01 = mid(0, 1), m12 = mid(1, 2), m20 = mid(2, 0);
+    return covers_all_parts({xs[0], m01, m20}, r, depth - 1) && covers_all_parts({m01, xs[1], m12}, r, depth - 1) &&
+           covers_all_parts({m20, m12, xs[2]}, r, depth - 1) && covers_all_parts({m01, m12, m20}, r, depth - 1);
+  }
+
   /// Is a point of the net that does not face x closer than d/2 to it?
   bool covers(const Point3& x, const Normals& normals = {}) const { return covers_within(x, m_d / 2, normals); }
 

@@ -240,6 +240,12 @@ public:
   explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_counter(comm.make_counter()) {}
   /// Collective: no index is taken any more (Communicator::Counter::close).
   void close() { m_counter->close(); }
+  /// Collective, after close(): a new counter, for another run_in_waves (its load adds up).
+  void restart()
+  {
+    m_counter = m_comm.make_counter();
+    m_next.reset();
+  }
   const Rank_load& load() const { return m_load; }
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
 

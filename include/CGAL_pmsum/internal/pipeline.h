@@ -10,7 +10,8 @@
 //      decision.h       each candidate: reused, certified inner, covered by the net, or CD-tested
 //                       (cd_filter.h), in waves of pieces of pairs (parallel.h); then the piece's
 //                       trim points: trim_points.h (which lattice segments), segment_search.h
-//                       (their free parts, exactly)
+//                       (their free parts, exactly); after the waves, the islands of the cells
+//                       the net does not cover whole then (island_search.h), in waves too
 //      distribution.h   with a communicator: the ranks take each wave's pieces as they come free
 //   4. covering_net.h   the output: the greedy (d/2, d)-net of the boundary candidates
 //   5. emit(p, q, direction, trim) for each output point (trim: null, or a trim-curve point), on the calling thread, in canonical order.
@@ -37,6 +38,7 @@
 #include <cmath>
 #include <string>
 #include <functional>
+#include <numeric>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -265,6 +267,13 @@ public:
     Decision_counters commit_counters;
     std::optional<Wave_ranks> ranks;
     if (m_o.communicator) ranks.emplace(*m_o.communicator);
+    // Progress: the islands' search (below) is reported as the last part of the level.
+    constexpr double islands_share = 0.1;
+    auto progress = [&](double from, double share) -> std::function<bool(double)> {
+      if (!m_o.callback) return {};
+      return [&, from, share](double f) { return m_o.callback(from + share * f); };
+    };
+    std::vector<std::vector<std::uint32_t>> island_cells(pieces.size()); // of each piece, from its trim search
     run_in_waves<Pair_decision>(
       work, wave_work(total), parallel,
       [&](std::size_t k, Pair_decision& decided) {
@@ -274,8 +283,33 @@ public:
       [&](std::size_t k, Pair_decision& decided) {
         commit_piece(context, pieces[k].pair, decided, net ? &*net : nullptr, commit_filter ? &*commit_filter : nullptr,
                     commit_counters, m_coarse_to_fine ? &m_cache : nullptr, output_point);
+        island_cells[k].swap(decided.island_cells);
       },
-      m_o.callback, ranks ? &*ranks : nullptr);
+      progress(0, 1 - islands_share), ranks ? &*ranks : nullptr);
+    // Stage 3c: the islands, after the waves, so that a cell the whole net covers needs no
+    // search (decide_islands); in waves too, each against the net as it stands.
+    std::vector<std::size_t> with_islands, island_work; // the pieces with such cells, and how many
+    for (std::size_t k = 0; k < pieces.size(); ++k)
+      if (!island_cells[k].empty()) {
+        with_islands.push_back(k);
+        island_work.push_back(island_cells[k].size());
+      }
+    if (!with_islands.empty()) { // (the same on every rank: the commits are)
+      if (ranks) ranks->restart();
+      const std::size_t cells = std::accumulate(island_work.begin(), island_work.end(), std::size_t(0));
+      run_in_waves<Pair_decision>(
+        island_work, wave_work(cells), parallel,
+        [&](std::size_t n, Pair_decision& decided) {
+          const std::size_t k = with_islands[n];
+          decide_islands(context, pieces[k], island_cells[k], filters->local(), decided, counters.local());
+        },
+        [&](std::size_t n, Pair_decision& decided) {
+          commit_trims(context, pieces[with_islands[n]].pair, decided, net ? &*net : nullptr, output_point);
+        },
+        progress(1 - islands_share, islands_share), ranks ? &*ranks : nullptr);
+    } else if (m_o.callback) {
+      m_o.callback(1); // (the level is done: nothing left to cancel)
+    }
     Decision_totals decided;
     counters.for_each([&](const Decision_counters& c) { decided.counters.add(c); });
     if (filters) filters->for_each([&](const Cd_filter& f) { decided.filter.add(f.statistics()); });

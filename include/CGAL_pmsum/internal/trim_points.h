@@ -22,9 +22,11 @@
 // that corner within d/2 of an output point. Nor does a cell whose three corners are closer
 // than d to one output point already chosen (of an earlier wave: decision.h): a ball is
 // convex, so that point covers the whole cell, whatever is visible in it; its corners are not
-// even tested. (Islands, pieces of F strictly inside one cell, are bounded by trim curves
-// only; they are not found this way but by the island search, island_search.h, in the
-// selected cells whose edges have no trim point.)
+// even tested. Likewise a cell cut into parts (Covering_net::covers_all_parts()), each part's
+// corners closer than d to one output point. (Islands, pieces of F strictly inside one cell,
+// are bounded by trim curves only; they are not found this way but by the island search,
+// island_search.h, in the selected cells whose edges have no trim point: find_island_points(),
+// after the level's waves, in the cells that the whole net does not cover then.)
 //
 // Not needed for the covering, but for a mesh: where a strip of F narrower than d/2 meets
 // the border of F (a narrow tunnel's wall meeting the top face), the corner is a trim point
@@ -338,6 +340,24 @@ private:
 /// narrow strips).
 enum class Strips : std::uint8_t { as_covering_needs, inside_corners, followed };
 
+/// The point of lattice point a plus trim (exact weights) of pair fp, with its origins and
+/// position.
+inline Trim_point lattice_trim_point(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
+                                     const Feature_pair& fp, std::uint32_t a, Trim trim, const Point3& hidden,
+                                     double covered_within)
+{
+  Trim_point t{lattice.p(a), lattice.q(a), std::move(trim), {}, covered_within, fp.first_direction, hidden};
+  t.trim.origin_p = lattice.origin(0, trim_weights(t.p, t.trim, 0), P);
+  t.trim.origin_q = lattice.origin(1, trim_weights(t.q, t.trim, 1), Q);
+  for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(P, Q, t.p, t.q, &t.trim, c);
+  return t;
+}
+
+/// The radius within which an output point covers a trim point of a lattice's cell (d minus
+/// the cells' diameter: see the file comment).
+inline double trim_covering_radius(const Facet_lattice& lattice, double d)
+{ return (std::max)(0., d - lattice.diameter()); }
+
 /// What is known of a lattice point when the trim search starts: its status, and for an
 /// inside one, the item pair whose crossing decided it, or its certified octree leaf.
 enum class Corner : std::uint8_t { unknown, inside, free, covered };
@@ -363,18 +383,17 @@ public:
     : m_lattice(lattice), m_p(P), m_q(Q), m_fp(fp), m_d(d), m_strips(strips), m_corner(corner),
       m_certified_box(certified_box), m_covered(covered), m_search(search), m_out(out),
       m_directions(pairs.directions.data() + fp.first_direction),
-      m_radius((std::max)(0., d - lattice.diameter())), m_searched_cell(lattice.cells().size(), false),
+      m_radius(trim_covering_radius(lattice, d)), m_searched_cell(lattice.cells().size(), false),
       m_exact(lattice.size()), m_rounded(lattice.size())
   {}
 
-  /// Selects the cells with a corner inside, and their segments, in a canonical order; with
-  /// Strips::as_covering_needs, not those an output point covers whole. Returns: is there any?
+  /// Selects the cells with a corner inside, and their segments, in a canonical order; not
+  /// those that `covered` tells are covered whole. Returns: is there any?
   bool select_cells()
   {
     for (std::size_t i = 0; i < m_lattice.cells().size(); ++i) {
       const auto& cell = m_lattice.cells()[i];
-      if (m_strips == Strips::as_covering_needs && m_covered({position(cell[0]), position(cell[1]), position(cell[2])}))
-        continue; // (its corners untested)
+      if (m_covered({position(cell[0]), position(cell[1]), position(cell[2])})) continue; // (its corners untested)
       bool inside = false;
       for (std::uint32_t c : cell) inside = inside || m_corner(c).status == Corner::inside;
       if (inside) search_cell(i);
@@ -438,24 +457,16 @@ public:
     }
   }
 
-  /// An island point of each selected cell whose edges have no free part.
-  void search_islands(Island_search& islands)
+  /// The selected cells whose edges have no free part and that are not certified inside the
+  /// sum (indices in the lattice's cells(), in order): those whose islands are searched
+  /// (find_island_points()).
+  void island_cells(std::vector<std::uint32_t>& out)
   {
-    bool started = false;
     for (std::size_t i : m_cells) {
       const auto& cell = m_lattice.cells()[i];
       bool has_ends = false;
       for (int k = 0; k < 3; ++k) has_ends = has_ends || m_segments[segment(cell, k)].has_ends;
-      if (has_ends || certified({cell[0], cell[1], cell[2]}, true)) continue;
-      if (!started) {
-        islands.start_facet(m_directions, m_fp.number_of_directions); // the plane of search_segments()
-        started = true;
-      }
-      const std::optional<Cell_weights> w = islands.island_point({point(cell[0]), point(cell[1]), point(cell[2])});
-      if (w)
-        add(cell[0],
-            Trim{m_lattice.p(cell[1]), m_lattice.q(cell[1]), (*w)[1], m_lattice.p(cell[2]), m_lattice.q(cell[2]), (*w)[2], {}, {}},
-            Point3{0, 0, 0}, m_radius);
+      if (!has_ends && !certified({cell[0], cell[1], cell[2]}, true)) out.push_back(std::uint32_t(i));
     }
   }
 
@@ -532,15 +543,9 @@ private:
     return m_certified_box(lo, hi, ball);
   }
 
-  /// Outputs the point of corner a plus trim (exact weights), with its origins and position.
+  /// Outputs the point of corner a plus trim (lattice_trim_point()).
   void add(std::uint32_t a, Trim trim, const Point3& hidden, double covered_within)
-  {
-    Trim_point t{m_lattice.p(a), m_lattice.q(a), std::move(trim), {}, covered_within, m_fp.first_direction, hidden};
-    t.trim.origin_p = m_lattice.origin(0, trim_weights(t.p, t.trim, 0), m_p);
-    t.trim.origin_q = m_lattice.origin(1, trim_weights(t.q, t.trim, 1), m_q);
-    for (int c = 0; c < 3; ++c) t.x[c] = sum_coordinate<double>(m_p, m_q, t.p, t.q, &t.trim, c);
-    m_out.push_back(std::move(t));
-  }
+  { m_out.push_back(lattice_trim_point(m_lattice, m_p, m_q, m_fp, a, std::move(trim), hidden, covered_within)); }
 
   /// Outputs the ends of the free parts of segment ab (`ends`: first and last of each; the
   /// segment is hidden before a first end, after a last one), but those in `known`. A free
@@ -600,25 +605,57 @@ private:
 
 /// The trim points of a facet lattice (see the file comment): the free-part ends of the
 /// edges of every cell with a corner `inside` (corner(i) gives what is known of lattice
-/// point i, computing it if needed), then, with `islands`, an island point of each of those
-/// cells whose edges had none (island_search.h), appended to `out` in a canonical order
-/// (`strips`: see Strips). A segment or a cell is
-/// skipped without a search when `certified(lo, hi, ball)` tells that its bounding box is
-/// inside the sum (by octree leaves; `ball`: also by the certificate's balls, costlier, for
-/// cells and for segments between two certified leaves), or a segment's ends lie in one
-/// certified octree leaf.
+/// point i, computing it if needed), appended to `out` in a canonical order (`strips`: see
+/// Strips); with `island_cells`, those of the cells whose edges had none, whose islands are
+/// then searched (find_island_points()). A cell is skipped without a search when
+/// `covered(corners)` tells that every point of it is closer than d to an output point (the
+/// caller's choice: with Strips::as_covering_needs only); a segment or a cell when
+/// `certified(lo, hi, ball)` tells that its bounding box is inside the sum (by octree leaves;
+/// `ball`: also by the certificate's balls, costlier, for cells and for segments between two
+/// certified leaves), or a segment's ends lie in one certified octree leaf.
 template <class CornerInfo, class Certified, class Covered>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
                       const Certified& certified_box, const Covered& covered, Segment_search& search,
-                      Island_search* islands, std::vector<Trim_point>& out)
+                      std::vector<std::uint32_t>* island_cells, std::vector<Trim_point>& out)
 {
   Facet_trim_search<CornerInfo, Certified, Covered> trim(lattice, P, Q, pairs, fp, d, strips, corner, certified_box,
                                                          covered, search, out);
   if (!trim.select_cells()) return;
   trim.search_segments();
   trim.search_border_corners();
-  if (islands) trim.search_islands(*islands);
+  if (island_cells) trim.island_cells(*island_cells);
+}
+
+/// An island point (island_search.h) of each of the lattice's `cells` (indices in cells(),
+/// from find_trim_points()) that has islands, appended to `out` in the cells' order; a cell
+/// is skipped without a search when `covered(corners)` tells that one output point is closer
+/// than d to all of it.
+template <class Covered>
+void find_island_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
+                        const Candidate_pairs& pairs, const Feature_pair& fp, double d,
+                        const std::vector<std::uint32_t>& cells, const Covered& covered, Segment_search& search,
+                        Island_search& islands, std::vector<Trim_point>& out)
+{
+  const Direction* directions = pairs.directions.data() + fp.first_direction;
+  bool started = false;
+  for (std::uint32_t i : cells) {
+    const auto& cell = lattice.cells()[i];
+    if (covered({lattice.position(cell[0], P, Q), lattice.position(cell[1], P, Q), lattice.position(cell[2], P, Q)}))
+      continue;
+    if (!started) { // the facet's plane, as in the trim search
+      search.start_plane(lattice.facet_corners(), directions, fp.number_of_directions);
+      islands.start_facet(directions, fp.number_of_directions);
+      started = true;
+    }
+    std::array<Exact_point, 3> T;
+    for (int k = 0; k < 3; ++k) T[k] = exact_sum(P, lattice.p(cell[k]), Q, lattice.q(cell[k]));
+    if (const std::optional<Cell_weights> w = islands.island_point(T))
+      out.push_back(lattice_trim_point(
+        lattice, P, Q, fp, cell[0],
+        Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}},
+        Point3{0, 0, 0}, trim_covering_radius(lattice, d)));
+  }
 }
 
 } // namespace internal
