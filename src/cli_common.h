@@ -524,7 +524,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     for (std::size_t r = 0; r < stats.ranks.size(); ++r) {
       const CGAL::Pmsum::Rank_statistics& s = stats.ranks[r];
       Json jr;
-      jr.integer("rank", r).integer("pieces", s.pieces).integer("candidates", s.candidates)
+      jr.integer("rank", r).integer("pieces", s.pieces).integer("candidates", s.candidates).integer("island_cells", s.island_cells)
         .integer("cd_queries", s.cd_queries).num("seconds_deciding", s.seconds_deciding)
         .num("seconds_exchanging", s.seconds_exchanging);
       list += (r ? ", " : "") + jr.dump(2);

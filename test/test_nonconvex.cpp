@@ -789,6 +789,7 @@ TEST_CASE("ranks: k ranks give one process's output and counts", "[ranks][long]"
         CHECK(r.stats.cd_queries == one.stats.cd_queries);
         CHECK(r.stats.triangle_pairs == one.stats.triangle_pairs);
         CHECK(r.stats.trim_segments == one.stats.trim_segments);
+        CHECK(r.stats.island_cells == one.stats.island_cells);
         // Each rank's share: every candidate decided once (every pair in one or more pieces),
         // the work shared out.
         REQUIRE(r.stats.ranks.size() == std::size_t(k));

@@ -19,6 +19,7 @@ struct Rank_statistics
 {
   std::size_t pieces = 0;          ///< pieces of feature pairs this rank decided (the unit of work)
   std::size_t candidates = 0;      ///< their candidates (which piece a rank takes varies from run to run)
+  std::size_t island_cells = 0;    ///< lattice cells whose islands it searched, or found covered (after the pieces)
   std::size_t cd_queries = 0;      ///< collision tests of candidates made by this rank
   double seconds_deciding = 0;     ///< seconds spent deciding its pieces
   double seconds_exchanging = 0;   ///< seconds spent exchanging decisions (waiting for the others included)

@@ -226,7 +226,7 @@ inline void check_same_work(Communicator& comm, const std::string& fingerprint)
 /// One rank's share of the decisions, as gathered into Statistics::ranks.
 struct Rank_load
 {
-  std::size_t pieces = 0, candidates = 0;
+  std::size_t pieces = 0, candidates = 0, island_cells = 0;
   double seconds_deciding = 0, seconds_exchanging = 0;
 };
 
@@ -240,11 +240,13 @@ public:
   explicit Wave_ranks(Communicator& comm) : m_comm(comm), m_counter(comm.make_counter()) {}
   /// Collective: no index is taken any more (Communicator::Counter::close).
   void close() { m_counter->close(); }
-  /// Collective, after close(): a new counter, for another run_in_waves (its load adds up).
-  void restart()
+  /// Collective, after close(): a new counter, for the islands' waves (pipeline.h): the
+  /// work of the indices taken then counts as island cells, not as pieces and candidates.
+  void start_islands()
   {
     m_counter = m_comm.make_counter();
     m_next.reset();
+    m_islands = true;
   }
   const Rank_load& load() const { return m_load; }
   void add_deciding_seconds(double s) { m_load.seconds_deciding += s; }
@@ -263,8 +265,12 @@ public:
       if (*m_next >= first + order.size()) break;
       const std::size_t i = order[*m_next - first];
       taken.push_back(i);
-      ++m_load.pieces;
-      m_load.candidates += work[i];
+      if (m_islands) {
+        m_load.island_cells += work[i];
+      } else {
+        ++m_load.pieces;
+        m_load.candidates += work[i];
+      }
       m_next.reset();
     }
     return taken;
@@ -310,6 +316,7 @@ private:
   Communicator& m_comm;
   std::unique_ptr<Communicator::Counter> m_counter;
   std::optional<std::size_t> m_next; // taken, beyond the last wave's end
+  bool m_islands = false;            // start_islands() called
   Rank_load m_load;
 };
 

@@ -89,7 +89,7 @@ inline Decision_totals add_over_ranks(Wave_ranks& ranks, const Decision_totals& 
     const auto load = r.pod<Rank_load>();
     all.counters.add(counters);
     all.filter.add(filter);
-    stats.ranks.push_back({load.pieces, load.candidates, filter.queries - counters.trim_queries,
+    stats.ranks.push_back({load.pieces, load.candidates, load.island_cells, filter.queries - counters.trim_queries,
                            load.seconds_deciding, load.seconds_exchanging});
   }
   return all;
@@ -295,7 +295,7 @@ public:
         island_work.push_back(island_cells[k].size());
       }
     if (!with_islands.empty()) { // (the same on every rank: the commits are)
-      if (ranks) ranks->restart();
+      if (ranks) ranks->start_islands();
       const std::size_t cells = std::accumulate(island_work.begin(), island_work.end(), std::size_t(0));
       run_in_waves<Pair_decision>(
         island_work, wave_work(cells), parallel,
