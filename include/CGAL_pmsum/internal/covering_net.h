@@ -115,28 +115,15 @@ public:
 
   /// Is one point of the net closer than r <= d to each of the points xs (rounded)? Then it
   /// is closer than r to every point of their convex hull (a ball is convex).
-  bool covers_all(const std::array<Point3, 3>& xs, double r) const
-  {
-    const double rr = r - m_margin;
-    if (!m_enabled || m_points.empty() || !(rr > 0)) return false;
-    // Cells have side d: the ball of radius r around xs[0] meets the 27 cells around its own.
-    const std::array<std::int64_t, 3> c = cell_of(xs[0]);
-    for (int o = 0; o < 27; ++o) {
-      const std::uint32_t first = m_cells.find(key({c[0] + o % 3 - 1, c[1] + o / 3 % 3 - 1, c[2] + o / 9 - 1}));
-      for (std::uint32_t n = first; n != none; n = m_next[n])
-        if (std::all_of(xs.begin(), xs.end(), [&](const Point3& x) { return dot(x - m_points[n], x - m_points[n]) < rr * rr; }))
-          return true;
-    }
-    return false;
-  }
+  bool covers_all(const std::array<Point3, 3>& xs, double r) const { return reach(xs, r) == Reach::all; }
 
   /// Is each of the parts of triangle xs (cut into four at its sides' midpoints, again and
   /// again, `depth` times at most) closer than r to one point of the net (covers_all())?
   /// Then so is every point of the triangle.
   bool covers_all_parts(const std::array<Point3, 3>& xs, double r, int depth) const
   {
-    if (covers_all(xs, r)) return true;
-    if (depth == 0) return false;
+    const Reach k = reach(xs, r);
+    if (k != Reach::first || depth == 0) return k == Reach::all; // (none: xs[0] itself is not covered)
     auto mid = [&](int i, int j) { return scaled(xs[i] + xs[j], 0.5); };
     const Point3 m01 = mid(0, 1), m12 = mid(1, 2), m20 = mid(2, 0);
     return covers_all_parts({xs[0], m01, m20}, r, depth - 1) && covers_all_parts({m01, xs[1], m12}, r, depth - 1) &&
@@ -159,6 +146,28 @@ public:
   }
 
 private:
+  /// Is one point of the net closer than r <= d to each of the points xs (all), else one
+  /// closer than r to xs[0] (first), or none?
+  enum class Reach { all, first, none };
+  Reach reach(const std::array<Point3, 3>& xs, double r) const
+  {
+    const double rr = r - m_margin;
+    if (!m_enabled || m_points.empty() || !(rr > 0)) return Reach::none;
+    // Cells have side d: the ball of radius r around xs[0] meets the 27 cells around its own.
+    const std::array<std::int64_t, 3> c = cell_of(xs[0]);
+    Reach found = Reach::none;
+    for (int o = 0; o < 27; ++o) {
+      const std::uint32_t first = m_cells.find(key({c[0] + o % 3 - 1, c[1] + o / 3 % 3 - 1, c[2] + o / 9 - 1}));
+      for (std::uint32_t n = first; n != none; n = m_next[n]) {
+        auto within = [&](const Point3& x) { return dot(x - m_points[n], x - m_points[n]) < rr * rr; };
+        if (!within(xs[0])) continue;
+        if (within(xs[1]) && within(xs[2])) return Reach::all;
+        found = Reach::first;
+      }
+    }
+    return found;
+  }
+
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
   /// Cell -> last point inserted there: open addressing with linear probing (the net is
