@@ -28,10 +28,13 @@ const std::string validate_help = std::string(
   "With --mesh, also the mesh of `pmsum mesh` (made by a second run):\n"
   "  checks     closed, manifold, self-intersection free, bounding a volume; its shells and\n"
   "             voids against the exact boundary's\n"
+  "  topology   its Euler characteristic (2 - 2 genus, summed over the shells) against the\n"
+  "             exact boundary's, where that is a 2-manifold\n"
   "  distance   the Hausdorff distance both ways between the mesh and the exact boundary, / d\n"
   "             (measured at lattice samples of spacing <= d/8 on both)\n"
   "Exit code 0 if every point is exact and every shell is covered within d (and the mesh is\n"
-  "valid, has the exact boundary's shells and is within d of it both ways), 4 otherwise.\n"
+  "valid, has the exact boundary's shells and Euler characteristic and is within d of it\n"
+  "both ways), 4 otherwise.\n"
   "\n"
   "  --exact FILE.nef3      read the exact boundary instead of computing it\n"
   "  --save-exact FILE.nef3 save the exact boundary (CGAL's exact Nef format)\n"
@@ -175,6 +178,7 @@ int command_validate(int argc, char** argv)
   // The mesh (--mesh): made by a second run, checked, and measured against the exact boundary.
   CGAL::Pmsum::Mesh_statistics ms;
   CGAL::Pmsum::Mesh_distance distance;
+  const std::optional<long> exact_euler = CGAL::Pmsum::euler_characteristic(shells); // (none: not a manifold)
   std::string mesh_error;
   double mesh_seconds = 0, distance_seconds = 0;
   bool mesh_ok = true;
@@ -194,7 +198,8 @@ int command_validate(int argc, char** argv)
     mesh_ok = mesh_error.empty() && ms.checks.valid() && ms.checks.shells == coverage.size() &&
               ms.checks.void_shells == voids && distance.mesh_to_surface < in.d && distance.surface_to_mesh < in.d &&
               distance.surface_to_mesh < ms.boundary_to_mesh_bound() && // the proved bounds, checked
-              distance.mesh_to_surface < ms.mesh_to_boundary_bound;
+              distance.mesh_to_surface < ms.mesh_to_boundary_bound &&
+              (!exact_euler || ms.checks.euler_characteristic == *exact_euler); // no handle too many or too few
   }
   const bool ok = off_boundary == 0 && covered == coverage.size() && mesh_ok;
 
@@ -221,6 +226,8 @@ int command_validate(int argc, char** argv)
                 << "  mesh checks       " << (c.valid() ? "closed, manifold, self-intersection free, bounding a volume" : c.failures())
                 << "; " << c.shells << " shells (" << c.void_shells << " voids), exact: " << coverage.size() << " ("
                 << voids << ")\n"
+                << "  mesh topology     Euler characteristic " << c.euler_characteristic << ", exact: "
+                << (exact_euler ? std::to_string(*exact_euler) : std::string("- (not a 2-manifold: not compared)")) << "\n"
                 << "  mesh distance     mesh to exact " << distance.mesh_to_surface / in.d << " d, exact to mesh "
                 << distance.surface_to_mesh / in.d << " d (proved below " << ms.boundary_to_mesh_bound() / in.d
                 << " d: output points within " << ms.point_distance / in.d << " d of the mesh; mesh within "
@@ -252,7 +259,8 @@ int command_validate(int argc, char** argv)
       m.boolean("made", mesh_error.empty()).str("error", mesh_error)
         .num("mesh_to_exact_over_d", distance.mesh_to_surface / in.d)
         .num("exact_to_mesh_over_d", distance.surface_to_mesh / in.d).integer("mesh_samples", distance.mesh_samples)
-        .integer("exact_samples", distance.surface_samples).boolean("ok", mesh_ok);
+        .integer("exact_samples", distance.surface_samples)
+        .add("exact_euler_characteristic", exact_euler ? std::to_string(*exact_euler) : "null").boolean("ok", mesh_ok);
       j.object("mesh", m);
       seconds.num("mesh", mesh_seconds).num("mesh_sum", ms.seconds_sum).num("mesh_reconstruction", ms.seconds_mesh)
         .num("mesh_distance", distance_seconds);

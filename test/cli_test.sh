@@ -341,6 +341,8 @@ head -c 200 "$work/m.ply" | grep -aq "format binary_little_endian" && ok || ko "
 "$pmsum" validate "$cube" "$tet" -d 0.2 --quiet --mesh --save-mesh "$work/vm.off" \
   --json "$work/vm.json" > "$work/vm.txt"
 if [ $? = 0 ] && grep -q "mesh checks       closed, manifold" "$work/vm.txt" && grep -q "1 shells (0 voids), exact: 1 (0)" "$work/vm.txt" \
+   && grep -q "mesh topology     Euler characteristic 2, exact: 2" "$work/vm.txt" \
+   && grep -q '"euler_characteristic": 2,' "$work/vm.json" && grep -q '"exact_euler_characteristic": 2,' "$work/vm.json" \
    && grep -q '"mesh_to_exact_over_d": 0\.' "$work/vm.json" && grep -q '"exact_to_mesh_over_d": 0\.' "$work/vm.json" \
    && grep -q '"boundary_to_mesh_bound": 0\.' "$work/vm.json" && grep -q '"mesh_to_boundary_bound": 0\.' "$work/vm.json" \
    && grep -q '"points_put_back": [0-9]' "$work/vm.json" \

@@ -1200,7 +1200,66 @@ TEST_CASE("mesh of a narrow tunnel, in its axes and turned: plane by plane, the 
     CHECK(ms.point_distance < ms.covering_distance);
     const long euler = long(vertices(m).size()) - long(edges(m).size()) + long(faces(m).size());
     CHECK(euler == 0);
+    CHECK(ms.checks.euler_characteristic == euler);
   }
+}
+
+TEST_CASE("Euler characteristic of shells: spheres and a torus; borders and touching solids not compared", "[applications][mesh]")
+{
+  using CGAL::Pmsum::Shell;
+  using CGAL::Pmsum::euler_characteristic;
+  auto shell_of = [](const Soup& soup) {
+    Shell s;
+    for (const auto& p : soup.points) s.points.push_back({p[0], p[1], p[2]});
+    s.triangles = soup.triangles;
+    return s;
+  };
+  const Shell cube = shell_of(box({0, 0, 0}, {1, 1, 1}));
+  CHECK(euler_characteristic({cube}) == 2);
+  CHECK(euler_characteristic({cube, cube}) == 4); // two spheres
+  CHECK(euler_characteristic({}) == 0);
+  // an n x m grid closed on itself both ways: a torus, V - E + F = nm - 3nm + 2nm = 0
+  Shell torus;
+  const std::size_t n = 7, m = 5;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < m; ++j) {
+      const double u = 2 * CGAL_PI * double(i) / n, v = 2 * CGAL_PI * double(j) / m;
+      torus.points.push_back({(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u), std::sin(v)});
+    }
+  auto at = [&](std::size_t i, std::size_t j) { return (i % n) * m + j % m; };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < m; ++j) {
+      torus.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      torus.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  CHECK(euler_characteristic({torus}) == 0);
+  CHECK(euler_characteristic({torus, cube}) == 2);
+  // not a closed 2-manifold: nothing to compare
+  Shell open = cube;
+  open.triangles.pop_back();
+  CHECK(!euler_characteristic({open}));
+  Shell turned = cube; // one triangle turned the other way
+  std::swap(turned.triangles[0][1], turned.triangles[0][2]);
+  CHECK(!euler_characteristic({turned}));
+  // two cubes that share an edge, in one shell (their two common vertices once): that edge is
+  // on four triangles
+  Soup two = box({0, 0, 0}, {1, 1, 1});
+  two.append(box({1, 1, 0}, {2, 2, 1}));
+  Shell touching = shell_of(two);
+  for (auto& t : touching.triangles)
+    for (std::size_t& k : t)
+      for (std::size_t e = 0; e < k; ++e)
+        if (touching.points[e] == touching.points[k]) { k = e; break; }
+  CHECK(!euler_characteristic({touching}));
+  // a cube and a cube sharing only a corner: a vertex with two fans
+  Soup corner = box({0, 0, 0}, {1, 1, 1});
+  corner.append(box({1, 1, 1}, {2, 2, 2}));
+  Shell pinched = shell_of(corner);
+  for (auto& t : pinched.triangles)
+    for (std::size_t& k : t)
+      for (std::size_t e = 0; e < k; ++e)
+        if (pinched.points[e] == pinched.points[k]) { k = e; break; }
+  CHECK(!euler_characteristic({pinched}));
 }
 
 TEST_CASE("mesh of a narrow slot, a slit and slivers: plane by plane, the passage kept", "[applications][mesh]")

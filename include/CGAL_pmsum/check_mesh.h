@@ -31,6 +31,8 @@ struct Mesh_checks
   bool bounds_a_volume = false;        ///< outer shells oriented outward, voids inward
   std::size_t shells = 0;              ///< connected components
   std::size_t void_shells = 0;         ///< of them, boundaries of voids (inside an odd number of others)
+  /// vertices - edges + faces: 2 - 2 g summed over the shells (g: a shell's genus, its handles)
+  long euler_characteristic = 0;
 
   /// \returns whether the mesh is closed, manifold, free of self-intersections and bounds a volume
   bool valid() const { return closed && manifold && self_intersection_free && bounds_a_volume; }
@@ -68,7 +70,7 @@ bool has_pinched_vertex(const TriangleMesh& mesh)
 }
 
 /// The shells of a closed, manifold mesh without self-intersections: `bounds_a_volume`,
-/// `shells` and `void_shells` of `c`.
+/// `shells`, `void_shells` and `euler_characteristic` of `c`.
 template <class TriangleMesh>
 void check_shells(const TriangleMesh& mesh, Mesh_checks& c)
 {
@@ -80,6 +82,7 @@ void check_shells(const TriangleMesh& mesh, Mesh_checks& c)
                                    CGAL::parameters::nesting_levels(std::ref(nesting))
                                      .is_cc_outward_oriented(std::ref(outward)));
   c.shells = nesting.size();
+  c.euler_characteristic = long(vertices(mesh).size()) - long(edges(mesh).size()) + long(faces(mesh).size());
   c.void_shells = 0;
   c.bounds_a_volume = true;
   for (std::size_t i = 0; i < nesting.size(); ++i) {
@@ -114,8 +117,8 @@ Mesh_checks check_mesh_given(const TriangleMesh& mesh, std::optional<bool> self_
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (the self-intersection test)
 /// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex point map
 /// \param mesh the mesh to check
-/// \returns what was found; `bounds_a_volume`, `shells` and `void_shells` only for a closed
-///          manifold mesh without self-intersections
+/// \returns what was found; `bounds_a_volume`, `shells`, `void_shells` and
+///          `euler_characteristic` only for a closed manifold mesh without self-intersections
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh>
 Mesh_checks check_mesh(const TriangleMesh& mesh)
 {

@@ -3,7 +3,8 @@
 //
 // CGAL::Pmsum::measure_mesh_distance(): the distance between a triangle mesh and a surface
 // made of shells (e.g. the exact boundary of a Minkowski sum), both ways, measured at lattice
-// samples of both. What `pmsum validate --mesh` reports for point_minkowski_sum_mesh().
+// samples of both; and euler_characteristic() of such a surface, to compare the topology. What
+// `pmsum validate --mesh` reports for point_minkowski_sum_mesh().
 
 #ifndef CGAL_PMSUM_MEASURE_MESH_DISTANCE_H
 #define CGAL_PMSUM_MEASURE_MESH_DISTANCE_H
@@ -18,6 +19,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -119,6 +123,50 @@ Shell to_shell(const TriangleMesh& mesh)
 }
 
 } // namespace internal
+
+/// \ingroup PkgPointMinkowskiSumCoverage
+/// The Euler characteristic (vertices - edges + triangles) of a surface given shell by shell,
+/// such as Nef_minkowski_sum_reference::shells(), to compare with a mesh's
+/// (Mesh_checks::euler_characteristic): equal shell counts do not tell a handle too many.
+///
+/// Combinatorial: from the triangles' vertex indices, each shell's vertices counted once.
+/// \param shells the surface
+/// \returns the sum over the shells of 2 - 2 g (g: the shell's genus), or nothing if a shell
+///          is not a closed, consistently oriented 2-manifold (an edge on other than two of its
+///          triangles, or a vertex whose triangles are not one fan: the boundary of solids
+///          that touch along an edge or at a vertex, for instance)
+inline std::optional<long> euler_characteristic(const std::vector<Shell>& shells)
+{
+  long chi = 0;
+  for (const Shell& s : shells) {
+    std::map<std::pair<std::size_t, std::size_t>, int> edges; // (smaller, larger) -> triangles on it
+    std::vector<std::map<std::size_t, std::size_t>> fan(s.points.size()); // at v: b -> c for each triangle (v, b, c)
+    for (const auto& t : s.triangles)
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
+        ++edges[{(std::min)(a, b), (std::max)(a, b)}];
+        if (!fan[a].emplace(b, c).second) return std::nullopt; // two triangles turn the same way at a
+      }
+    for (const auto& e : edges)
+      if (e.second != 2) return std::nullopt;
+    long used = 0;
+    for (const auto& around : fan) {
+      if (around.empty()) continue;
+      ++used;
+      const std::size_t first = around.begin()->first;
+      std::size_t at = first, steps = 0;
+      do {
+        const auto next = around.find(at);
+        if (next == around.end()) return std::nullopt;
+        at = next->second;
+        ++steps;
+      } while (at != first && steps <= around.size());
+      if (steps != around.size()) return std::nullopt; // (more than one fan)
+    }
+    chi += used - long(edges.size()) + long(s.triangles.size());
+  }
+  return chi;
+}
 
 /// \ingroup PkgPointMinkowskiSumCoverage
 /// Measures the distance between a triangle mesh and a surface in both directions (the two
