@@ -7,7 +7,8 @@
 // and the covering's bound on the boundary's distance to the mesh is d' + e, e the largest
 // distance from a point to the mesh (point_minkowski_sum_mesh.h): a point put back no longer
 // counts in e, and at a sharp corner that the advancing front cut off, the tent puts the
-// corner back. A tent that crosses the mesh (CGAL's self_intersections()) is taken down again,
+// corner back. A point on a side of its nearest triangle (up to rounding: a crease point between
+// two vertices of the crease) stays out: it is on the mesh, and its tent would be a sliver. A tent that crosses the mesh (CGAL's self_intersections()) is taken down again,
 // and so is one that would join the points of two parts of the sum (Sum_parts): the mesh
 // stays as valid as it was.
 
@@ -19,6 +20,8 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
@@ -77,7 +80,15 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     return it == part_at.end() ? std::size_t(-1) : it->second;
   };
   const auto positions = double_positions(points);
-  std::unordered_set<std::size_t> refused; // points whose tent was taken down, or of another part
+  double scale = 0;
+  for (const auto& x : positions) scale = (std::max)({scale, std::abs(x.x()), std::abs(x.y()), std::abs(x.z())});
+  const double on_mesh = rounding_margin(scale);
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto at = [&](vertex_descriptor v) {
+    const Position x = position(get(CGAL::vertex_point, mesh, v));
+    return Epick::Point_3(x[0], x[1], x[2]);
+  };
+  std::unordered_set<std::size_t> refused; // points whose tent was taken down, of another part, or on a side
   std::size_t put_back = 0;
   // Passes: a triangle takes one point a pass, the points that shared it wait for the next.
   for (int pass = 0; pass < 3; ++pass) {
@@ -93,10 +104,17 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     for (std::size_t i : left_out) {
       const std::size_t k = tree.nearest(positions[i]);
       const auto h = halfedge(face_of[k], mesh);
-      bool same_part = true;
-      for (vertex_descriptor v : {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)})
-        same_part = same_part && part_of(v) == part[i];
-      if (!same_part) refused.insert(i);
+      const std::array<vertex_descriptor, 3> corner = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+      bool same_part = true, on_a_side = false;
+      for (int c = 0; c < 3; ++c) {
+        same_part = same_part && part_of(corner[c]) == part[i];
+        // (a point on a side, up to rounding, such as a crease point between two of the
+        // crease's vertices, is on the mesh already: its tent would have a triangle with three
+        // collinear corners)
+        on_a_side = on_a_side || CGAL::squared_distance(positions[i], Epick::Segment_3(at(corner[c]), at(corner[(c + 1) % 3]))) <=
+                                   on_mesh * on_mesh;
+      }
+      if (!same_part || on_a_side) refused.insert(i);
       else if (used[k]) waiting = true;
       else {
         used[k] = 1;
