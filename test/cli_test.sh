@@ -369,6 +369,20 @@ then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
   > "$work/tripod.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/tripod.txt"; then ok
 else ko "tripod + tiny octahedron: a mesh within d of the boundary"; cat "$work/tripod.txt"; fi
+# cross + an octahedron at d = 3%: a crease point put back by splitting a triangle at it made a
+# triangle with three collinear corners (height 1e-18 of the diagonal); none now (height over
+# longest side at least 1e-9 for every triangle)
+"$pmsum" generate octahedron -o "$work/octahedron.off" > /dev/null
+"$pmsum" mesh "$data/cross.off" "$work/octahedron.off" --scale-q 0.3 -d 0.03 --relative -o "$work/cross_oct.off" --quiet
+if [ $? = 0 ] && awk 'NF == 0 { next } { i++ } i == 2 { nv = $1 } i > 2 && i <= 2 + nv { x[i - 3] = $1; y[i - 3] = $2; z[i - 3] = $3 }
+      i > 2 + nv && NF == 4 { a = $2; b = $3; c = $4; n++
+        ux = x[b] - x[a]; uy = y[b] - y[a]; uz = z[b] - z[a]; vx = x[c] - x[a]; vy = y[c] - y[a]; vz = z[c] - z[a]
+        cx = uy * vz - uz * vy; cy = uz * vx - ux * vz; cz = ux * vy - uy * vx
+        l = ux * ux + uy * uy + uz * uz; m = vx * vx + vy * vy + vz * vz
+        wx = x[c] - x[b]; wy = y[c] - y[b]; wz = z[c] - z[b]; k = wx * wx + wy * wy + wz * wz
+        if (m > l) l = m; if (k > l) l = k
+        if (cx * cx + cy * cy + cz * cz <= 1e-18 * l * l) bad++ }
+      END { exit bad > 0 || n < 100 }' "$work/cross_oct.off"; then ok; else ko "cross + octahedron: a triangle with collinear corners"; fi
 # CGAL's joint + a turned icosahedron a thousandth of its size at d = 20%: every level up to d/4
 # fails (the advancing front leaves holes, plane by plane too) but the last, d/4 with the points
 # on sharp creases kept: a mesh within d of Nef's boundary both ways (validate: exit 0)
