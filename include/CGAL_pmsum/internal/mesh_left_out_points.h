@@ -8,9 +8,10 @@
 // distance from a point to the mesh (point_minkowski_sum_mesh.h): a point put back no longer
 // counts in e, and at a sharp corner that the advancing front cut off, the tent puts the
 // corner back. A point on a side of its nearest triangle (up to rounding: a crease point between
-// two vertices of the crease) stays out: it is on the mesh, and its tent would be a sliver. A tent that crosses the mesh (CGAL's self_intersections()) is taken down again,
-// and so is one that would join the points of two parts of the sum (Sum_parts): the mesh
-// stays as valid as it was.
+// two vertices of the crease) stays out: it is on the mesh, and its tent would be a sliver. A
+// tent that crosses the mesh (CGAL's self_intersections()) is taken down again, and so is one
+// that would join the points of two parts of the sum (Sum_parts): the mesh stays as valid as
+// it was.
 
 #ifndef CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
 #define CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
