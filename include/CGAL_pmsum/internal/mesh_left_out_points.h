@@ -81,9 +81,7 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     return it == part_at.end() ? std::size_t(-1) : it->second;
   };
   const auto positions = double_positions(points);
-  double scale = 0;
-  for (const auto& x : positions) scale = (std::max)({scale, std::abs(x.x()), std::abs(x.y()), std::abs(x.z())});
-  const double on_mesh = rounding_margin(scale);
+  const double on_mesh = rounding_margin_of(positions);
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   auto at = [&](vertex_descriptor v) {
     const Position x = position(get(CGAL::vertex_point, mesh, v));

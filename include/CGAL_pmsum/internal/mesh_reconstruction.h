@@ -496,6 +496,16 @@ inline double rounding_margin(double largest_coordinate)
   return 256 * std::numeric_limits<double>::epsilon() * largest_coordinate;
 }
 
+/// rounding_margin() for the largest coordinate of `positions` (points of doubles, or arrays
+/// of three).
+template <class Range>
+double rounding_margin_of(const Range& positions)
+{
+  double largest = 0;
+  for (const auto& x : positions) largest = (std::max)({largest, std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
+  return rounding_margin(largest);
+}
+
 /// The largest distance from `points` to the triangles of `mesh` (0 if every point is a
 /// vertex; infinity if the mesh has no triangle), plus rounding_margin() if not 0 (the
 /// positions are rounded to doubles alike for both). Only the points at no vertex are searched for.
@@ -504,17 +514,15 @@ double largest_distance_to_mesh(const std::vector<Point>& points, const Triangle
 {
   if (faces(mesh).empty()) return std::numeric_limits<double>::infinity();
   std::vector<Point_search::K::Point_3> away;
-  double scale = 0;
   for (std::size_t i : points_at_no_vertex(points, mesh)) {
     const Position x = position(points[i]);
     away.emplace_back(x[0], x[1], x[2]);
-    scale = (std::max)({scale, std::abs(x[0]), std::abs(x[1]), std::abs(x[2])});
   }
   if (away.empty()) return 0;
   const double e = largest_distance_to({to_shell(mesh)}, [&](const auto& f) {
     for (const auto& x : away) f(x);
   });
-  return e > 0 ? e + rounding_margin(scale) : e;
+  return e > 0 ? e + rounding_margin_of(away) : e;
 }
 
 /// A bound of the largest distance from a point of `mesh` to the nearest of `points`, made
@@ -529,9 +537,7 @@ double mesh_distance_bound(const TriangleMesh& mesh, const std::vector<Point>& p
 {
   using V = std::array<double, 3>;
   const Shell s = to_shell(mesh);
-  double scale = 0;
-  for (const V& p : s.points) scale = (std::max)({scale, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
-  const double margin = rounding_margin(scale);
+  const double margin = rounding_margin_of(s.points);
   std::optional<Point_search> search; // built on the first triangle that needs it
   auto distance = [&](const V& x) {
     if (!search) search.emplace(points);
