@@ -154,6 +154,24 @@ TEST_CASE("statistics add up", "[convex][statistics]")
   CHECK(r.stats.feature_pairs > 0);
 }
 
+TEST_CASE("sample counts are the samples listed, coarse to fine too", "[convex][statistics]")
+{
+  // number_of_samples() counts an edge's samples in closed form (shared fractions of its own
+  // and its two triangles' lattices counted once): it must match the samples listed.
+  using namespace CGAL::Pmsum::internal;
+  const auto ops = cd_operands(random_convex(40, 3), ellipsoid(1, 0.3, 0.7));
+  for (const Mesh_data* m : {&ops.first, &ops.second}) {
+    const Mesh_sampling coarse(*m, 0.13, "M");
+    for (const Mesh_sampling& s : {coarse, Mesh_sampling(*m, 0.07, "M"), Mesh_sampling(*m, 0.021, "M", &coarse)})
+      for (int dim = 1; dim <= 2; ++dim)
+        for (Index i = 0; i < (dim == 1 ? m->number_of_edges() : m->number_of_triangles()); ++i) {
+          std::vector<Sample> listed;
+          s.samples(Feature{dim, i}, listed);
+          REQUIRE(s.number_of_samples(Feature{dim, i}) == listed.size());
+        }
+  }
+}
+
 TEST_CASE("Parallel_tag gives the same points in the same order", "[parallel][long]")
 {
 #ifdef CGAL_LINKED_WITH_TBB

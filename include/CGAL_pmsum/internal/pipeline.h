@@ -190,10 +190,10 @@ public:
     // Stage 2: the candidates, counted, and the pairs cut into pieces.
     const std::size_t total = number_of_candidates(pairs, sp, sq);
     stats.candidates = total;
+    if (total > m_o.max_candidates) throw Too_many_candidates(total, m_o.max_candidates); // (before the pieces: prompt)
     std::vector<std::size_t> work;
     const std::vector<Pair_piece> pieces = make_pieces(pairs, sp, sq, piece_work(total), piece_rows, work);
     if (m_o.communicator) check_same_work(*m_o.communicator, fingerprint(d, work));
-    if (total > m_o.max_candidates) throw Too_many_candidates(total, m_o.max_candidates);
 
     // Stage 3a: the octree filter.
     start = Clock::now();

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -162,9 +163,13 @@ public:
   {
     if (f.dimension == 0) return 1;
     if (f.dimension == 1) {
-      std::size_t count = 0;
-      for_each_edge_parameter(f.index, [&](std::int32_t, std::int32_t) { ++count; });
-      return count;
+      // The distinct fractions k/a, k/b, k/c in (0, 1) (for_each_edge_parameter), counted by
+      // inclusion-exclusion: those of both a and b are the k/gcd(a, b). O(1), not O(samples):
+      // the refusal of a d too small counts the candidates of every pair first.
+      const auto& edge = m_mesh->edges[f.index];
+      const std::int64_t a = m_edge_n[f.index], b = edge.f[0] == no_index ? 1 : m_triangle_n[edge.f[0]],
+                         c = edge.f[1] == no_index ? 1 : m_triangle_n[edge.f[1]];
+      return std::size_t(a + b + c - std::gcd(a, b) - std::gcd(a, c) - std::gcd(b, c) + std::gcd(std::gcd(a, b), c) - 1);
     }
     const std::size_t n = std::size_t(m_triangle_n[f.index]);
     return n < 3 ? 0 : (n - 1) * (n - 2) / 2;
