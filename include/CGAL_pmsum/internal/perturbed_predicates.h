@@ -191,8 +191,9 @@ Vec3<NT> orientation_gradient(const std::array<Vec3<NT>, 4>& p, const std::array
 ///  - `template <class G> CGAL::Sign perturbation_sign(const G& g)`: the sign of the first
 ///    non-zero g(nt).v_i over its chain (g a generic callable, as in filtered_sign());
 ///  - `Point fixed_point(const std::array<double, 3>& x)`: a point of a static mesh at x.
-/// It may provide `unperturbed_orientation(a, b, c, d, value)`, hiding the one here, where it
-/// has a cheaper exact evaluation of the orientation at delta = 0.
+/// It may provide `unperturbed_orientation(a, b, c, d, value)` and
+/// `orientation_gradient_of<NT>(a, b, c, d)`, hiding the ones here, where it has cheaper
+/// exact evaluations of the orientation at delta = 0 and of its gradient.
 template <class Derived, class Point>
 class Perturbed_predicates
 {
@@ -208,12 +209,16 @@ public:
     };
     const CGAL::Sign s0 = self().unperturbed_orientation(a, b, c, d, value);
     if (s0 != CGAL::ZERO) return s0;
-    return self().perturbation_sign([&](auto nt) {
-      using NT = decltype(nt);
-      return orientation_gradient<NT>({self().template frame_position<NT>(a), self().template frame_position<NT>(b),
-                                       self().template frame_position<NT>(c), self().template frame_position<NT>(d)},
-                                      {a.shift, b.shift, c.shift, d.shift});
-    });
+    return self().perturbation_sign([&](auto nt) { return self().template orientation_gradient_of<decltype(nt)>(a, b, c, d); });
+  }
+
+  /// The gradient of orient3d(a, b, c, d) in delta, in NT.
+  template <class NT>
+  Vec3<NT> orientation_gradient_of(const Point& a, const Point& b, const Point& c, const Point& d)
+  {
+    return orientation_gradient<NT>({self().template frame_position<NT>(a), self().template frame_position<NT>(b),
+                                     self().template frame_position<NT>(c), self().template frame_position<NT>(d)},
+                                    {a.shift, b.shift, c.shift, d.shift});
   }
 
   /// Do the triangles A and B cross? `known`: the sides of A's points w.r.t. B's plane
