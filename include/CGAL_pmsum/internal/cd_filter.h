@@ -932,7 +932,7 @@ private:
   const Affine_predicate& exact_affine_form(const Moving_point& a, const Moving_point& b, const Moving_point& c,
                                             const Moving_point& d)
   {
-    auto compute = [&] { return Affine_predicate{value_at_origin<Exact_nt>(a, b, c, d), gradient<Exact_nt>(a, b, c, d)}; };
+    auto compute = [&] { return affine_form(a, b, c, d); };
     Predicate_key key{};
     int k = 0;
     for (const Moving_point* m : {&a, &b, &c, &d}) {
