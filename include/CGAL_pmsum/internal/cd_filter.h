@@ -492,6 +492,31 @@ public:
     return {value_at_origin<Exact_nt>(a, b, c, d), gradient<Exact_nt>(a, b, c, d)};
   }
 
+  /// D(0) and g of the orientation of the four points, exactly; of the meshes' vertices, from
+  /// the cache of the predicates met (the orientations that intervals do not decide are
+  /// mostly zero: contacts of the features near a candidate's, met again by the candidates
+  /// that follow on their pair; anchor + octahedron, one thread: 22% faster, part +
+  /// icosahedron 40%, the same output; and the roots of the segment search, which meets the
+  /// predicates of one pair on many lines: rotated narrow tunnel 4.05 -> 2.86 s). The
+  /// reference is valid until the next call.
+  const Affine_predicate& exact_affine_form(const Moving_point& a, const Moving_point& b, const Moving_point& c,
+                                            const Moving_point& d)
+  {
+    auto compute = [&] { return affine_form(a, b, c, d); };
+    auto uncached = [&]() -> const Affine_predicate& { return m_affine_form = compute(); };
+    if (m_exact_doubles) return uncached(); // (cheaper than a look-up)
+    Predicate_key key{};
+    int k = 0;
+    for (const Moving_point* m : {&a, &b, &c, &d}) {
+      // (a vertex of the moving mesh or of the static one: their bases do not change)
+      const std::uint64_t code = vertex_code(m_moving, m->base, 0) | vertex_code(m_static, m->base, 1);
+      if (code == 0) return uncached();
+      key[k / 2] |= (code << 2 | std::uint64_t(m->shift + 1)) << (32 * (k % 2));
+      ++k;
+    }
+    return m_affine_forms.get(key, compute);
+  }
+
   /// What intervals alone tell of where the pair (u, v) crosses along the segment of
   /// translations a + l (b - a) (a and b: boxes holding its ends); see Crossing_range.
   /// Triangle A + t meets triangle B iff t is in the convex polytope B - A, whose facets are
@@ -917,35 +942,10 @@ private:
                                    const Moving_point& d)
   {
     if constexpr (std::is_same<NT, Exact_nt>::value) {
-      if (m_exact_doubles) return to_nt<Exact_nt>(gradient<double>(a, b, c, d));
       return exact_affine_form(a, b, c, d).g;
     } else {
       return gradient<NT>(a, b, c, d);
     }
-  }
-
-  /// D(0) and g of the orientation of the four points, exactly; of the meshes' vertices, from
-  /// the cache of the predicates met (the orientations that intervals do not decide are
-  /// mostly zero: contacts of the features near a candidate's, met again by the candidates
-  /// that follow on their pair; anchor + octahedron, one thread: 22% faster, part +
-  /// icosahedron 40%, the same output). The reference is valid until the next call.
-  const Affine_predicate& exact_affine_form(const Moving_point& a, const Moving_point& b, const Moving_point& c,
-                                            const Moving_point& d)
-  {
-    auto compute = [&] { return affine_form(a, b, c, d); };
-    Predicate_key key{};
-    int k = 0;
-    for (const Moving_point* m : {&a, &b, &c, &d}) {
-      // (a vertex of the moving mesh or of the static one: their bases do not change)
-      const std::uint64_t code = vertex_code(m_moving, m->base, 0) | vertex_code(m_static, m->base, 1);
-      if (code == 0) {
-        m_affine_form = compute();
-        return m_affine_form;
-      }
-      key[k / 2] |= (code << 2 | std::uint64_t(m->shift + 1)) << (32 * (k % 2));
-      ++k;
-    }
-    return m_affine_forms.get(key, compute);
   }
 
   /// 1 + 2 v + mesh (v < 2^28) if `base` is vertex v of `mesh`, else 0: a point's code in a Predicate_key.

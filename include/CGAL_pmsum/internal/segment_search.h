@@ -415,7 +415,7 @@ private:
         if ((da.inf() == 0 && da.sup() == 0) || (db.inf() == 0 && db.sup() == 0)) return; // zero at an end
       }
       // W D(a) and W D(b), exactly; the root is l = D(a) / (D(a) - D(b)).
-      const Affine_predicate f = m_filter.affine_form(a, b, c, d);
+      const Affine_predicate& f = m_filter.exact_affine_form(a, b, c, d);
       const Exact_nt da = s.a.W * f.d0 + dot(f.g, s.a.X), db = s.b.W * f.d0 + dot(f.g, s.b.X);
       const CGAL::Sign sa = CGAL::sign(da), sb = CGAL::sign(db);
       if (sa == sb || sa == CGAL::ZERO || sb == CGAL::ZERO) return; // no root strictly inside
