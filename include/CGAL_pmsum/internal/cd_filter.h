@@ -942,6 +942,7 @@ private:
                                    const Moving_point& d)
   {
     if constexpr (std::is_same<NT, Exact_nt>::value) {
+      if (m_exact_doubles) return to_nt<Exact_nt>(gradient<double>(a, b, c, d)); // (no D(0) needed)
       return exact_affine_form(a, b, c, d).g;
     } else {
       return gradient<NT>(a, b, c, d);

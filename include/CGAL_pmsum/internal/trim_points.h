@@ -388,15 +388,19 @@ public:
   {}
 
   /// Selects the cells with a corner inside, and their segments, in a canonical order; not
-  /// those that `covered` tells are covered whole. Returns: is there any?
+  /// those that `covered` tells are covered whole, nor those with every corner inside that
+  /// are certified inside the sum (their segments have no free part, nor they an island:
+  /// one test for the cell rather than one for each of its segments, which were tested
+  /// alone, and one for the cell before its island search). Returns: is there any?
   bool select_cells()
   {
     for (std::size_t i = 0; i < m_lattice.cells().size(); ++i) {
       const auto& cell = m_lattice.cells()[i];
       if (m_covered({position(cell[0]), position(cell[1]), position(cell[2])})) continue; // (its corners untested)
-      bool inside = false;
-      for (std::uint32_t c : cell) inside = inside || m_corner(c).status == Corner::inside;
-      if (inside) search_cell(i);
+      int inside = 0;
+      for (std::uint32_t c : cell) inside += m_corner(c).status == Corner::inside;
+      if (inside == 3 && certified({cell[0], cell[1], cell[2]}, true)) continue;
+      if (inside > 0) search_cell(i);
     }
     std::sort(m_to_search.begin(), m_to_search.end());
     return !m_cells.empty();
