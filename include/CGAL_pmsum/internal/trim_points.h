@@ -17,7 +17,8 @@
 // a "trim point", exactly on the boundary of the sum, in T, closer than D_F to y (y is not
 // a corner). Every trim point is output unless an output point is closer than d - D_F to
 // it, so y has an output point closer than d. Hence: the edges of every cell with a corner
-// known to be inside (tested, certified or reused) are searched. A cell whose corners are
+// known to be inside (tested, certified or reused) are searched, but for a cell that the
+// interior certificate shows inside the sum whole (no free point there). A cell whose corners are
 // all free or covered needs nothing: its points are within f(T) <= d/2 of a corner, and
 // that corner within d/2 of an output point. Nor does a cell whose three corners are closer
 // than d to one output point already chosen (of an earlier wave: decision.h): a ball is
