@@ -385,7 +385,7 @@ public:
       m_certified_box(certified_box), m_covered(covered), m_search(search), m_out(out),
       m_directions(pairs.directions.data() + fp.first_direction),
       m_radius(trim_covering_radius(lattice, d)), m_searched_cell(lattice.cells().size(), false),
-      m_exact(lattice.size()), m_rounded(lattice.size())
+      m_uncertified_cell(lattice.cells().size(), false), m_exact(lattice.size()), m_rounded(lattice.size())
   {}
 
   /// Selects the cells with a corner inside, and their segments, in a canonical order; not
@@ -400,7 +400,10 @@ public:
       if (m_covered({position(cell[0]), position(cell[1]), position(cell[2])})) continue; // (its corners untested)
       int inside = 0;
       for (std::uint32_t c : cell) inside += m_corner(c).status == Corner::inside;
-      if (inside == 3 && certified({cell[0], cell[1], cell[2]}, true)) continue;
+      if (inside == 3) {
+        if (certified({cell[0], cell[1], cell[2]}, true)) continue;
+        m_uncertified_cell[i] = true;
+      }
       if (inside > 0) search_cell(i);
     }
     std::sort(m_to_search.begin(), m_to_search.end());
@@ -471,7 +474,9 @@ public:
       const auto& cell = m_lattice.cells()[i];
       bool has_ends = false;
       for (int k = 0; k < 3; ++k) has_ends = has_ends || m_segments[segment(cell, k)].has_ends;
-      if (!has_ends && !certified({cell[0], cell[1], cell[2]}, true)) out.push_back(std::uint32_t(i));
+      // (a cell that failed the test in select_cells() is not tested again: same answer)
+      if (!has_ends && (m_uncertified_cell[i] || !certified({cell[0], cell[1], cell[2]}, true)))
+        out.push_back(std::uint32_t(i));
     }
   }
 
@@ -600,6 +605,7 @@ private:
   double m_radius; // within which an output point covers a trim point
   std::vector<std::size_t> m_cells;                    // selected, in order
   std::vector<bool> m_searched_cell;                   // selected?
+  std::vector<bool> m_uncertified_cell;                // its whole-cell test failed (select_cells())?
   std::map<Segment, Segment_info> m_segments;          // of the selected cells, each once
   std::vector<Segment> m_to_search;                    // in the order searched
   std::map<Segment, std::array<std::uint32_t, 2>> m_cells_of; // (follow())
