@@ -45,6 +45,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -166,6 +167,10 @@ public:
                  const Vec3<Exact_nt>* side = nullptr)
   {
     ++m_segments;
+    if (!m_roots_of || !same_point(m_roots_of->first, s.a) || !same_point(m_roots_of->second, s.b)) {
+      m_roots.clear();
+      m_roots_of = std::make_pair(s.a, s.b);
+    }
     m_directions = directions;
     m_count = count;
     m_side = side;
@@ -197,7 +202,7 @@ public:
     keep_pairs_that_matter();
     for (std::size_t k = 0; k < m_pairs.size(); ++k) {
       const auto& pair = m_pairs[k];
-      const std::vector<Segment_parameter> local = pair_roots(s, pair.first, pair.second);
+      const std::vector<Segment_parameter>& local = cached_roots(s, pair.first, pair.second);
       const std::size_t n = 2 * local.size() - 1;
       std::size_t e = 0;
       while (e < n) {
@@ -379,7 +384,7 @@ private:
         range = m_filter.crossing_range(hit->first, hit->second, m_a, m_b);
       }
       if (range.in_to > 1) return true; // crosses from here (convex) up to the point 1
-      const std::vector<Segment_parameter> local = pair_roots(s, hit->first, hit->second);
+      const std::vector<Segment_parameter>& local = cached_roots(s, hit->first, hit->second);
       const std::size_t k = std::size_t(std::upper_bound(local.begin(), local.end(), at) - local.begin()) - 1;
       const bool root = compare(local[k], at) == CGAL::ZERO;
       std::size_t end = (root && !on_gap) ? 2 * k : 2 * k + 1; // the pair's element holding ours
@@ -399,6 +404,19 @@ private:
                         [](const Segment_parameter& a, const Segment_parameter& b) { return compare(a, b) == CGAL::ZERO; }),
             v.end());
   }
+
+  /// pair_roots(s, u, v), computed once per segment: kept while the same segment is searched
+  /// again (the island search searches each line twice, to either side; covered_by_hops()
+  /// and the pairs' runs ask for the same pairs). They do not depend on the perturbation.
+  const std::vector<Segment_parameter>& cached_roots(const Translation_segment& s, Index u, Index v)
+  {
+    auto [it, added] = m_roots.try_emplace({u, v});
+    if (added) it->second = pair_roots(s, u, v);
+    return it->second;
+  }
+
+  static bool same_point(const Exact_point& a, const Exact_point& b)
+  { return a.W == b.W && a.X[0] == b.X[0] && a.X[1] == b.X[1] && a.X[2] == b.X[2]; }
 
   /// 0, the roots in (0, 1) of the predicates of pair (u, v) along s, and 1, sorted, unique.
   std::vector<Segment_parameter> pair_roots(const Translation_segment& s, Index u, Index v) const
@@ -485,6 +503,8 @@ private:
   std::vector<std::pair<Index, Index>> m_pairs;
   std::vector<Crossing_range> m_ranges;
   std::optional<std::pair<Index, Index>> m_last_quick; // the pair of the last quick exit
+  std::optional<std::pair<Exact_point, Exact_point>> m_roots_of;                 // the segment of m_roots
+  std::map<std::pair<Index, Index>, std::vector<Segment_parameter>> m_roots; // cached_roots()
 };
 
 } // namespace internal
