@@ -25,6 +25,13 @@
 // with a relative margin far above its rounding error, so the certificate is sound; the
 // margins only make it certify a little less (never a wrong candidate skipped).
 //
+// What it cannot certify, at any radius: the points of int(P + Q) that lie in neither
+// int(P) + Q nor P + int(Q). Where parts of a solid touch along a face or an edge, their sums
+// with Q meet along planes (blocks.off, boxes touching at edges, plus a cube: the sums of two
+// boxes are [0,2]x[0,2]x[0,1.5] and [2,4]x[0,2]x[0,1.5], and (2, 0.5, z) is inside the sum but
+// c - q misses every open box of blocks for every q in the cube). Such a seam's points,
+// and the lattice cells of the convolution facets that lie on it, are always searched.
+//
 // Cells form an octree over the candidates' leaf cells of size h: a node is certified as a
 // whole when it can be, else its children are tried, down to the leaves.
 
