@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -30,6 +31,22 @@ std::size_t count_in(const std::vector<IK::Point_3>& pts, const Point& lo, const
   }
   return n;
 }
+
+/// The CD filter of two operands (cd_operands()), and random translations in the box of
+/// their sum.
+struct Cd_case
+{
+  Cd_case(const Soup& ps, const Soup& qs)
+    : operands(cd_operands(ps, qs)), geometry(operands.first, operands.second), filter(&geometry),
+      bp(CGAL::Pmsum::internal::mesh_box(operands.first)), bq(CGAL::Pmsum::internal::mesh_box(operands.second)) {}
+  /// Coordinate c of a random translation.
+  double coordinate(CGAL::Random& rng, int c) const { return rng.get_double(bp.first[c] + bq.first[c], bp.second[c] + bq.second[c]); }
+
+  std::pair<CGAL::Pmsum::internal::Mesh_data, CGAL::Pmsum::internal::Mesh_data> operands;
+  CGAL::Pmsum::internal::Cd_geometry geometry;
+  CGAL::Pmsum::internal::Cd_filter filter;
+  std::pair<CGAL::Pmsum::internal::Point3, CGAL::Pmsum::internal::Point3> bp, bq;
+};
 
 } // namespace
 
@@ -402,20 +419,16 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
   CGAL::Random rng(11);
   std::size_t in = 0, out = 0, tested = 0;
   for (const auto& [ps, qs] : cases) {
-    const auto operands = cd_operands(ps, qs);
-    const Mesh_data &P = operands.first, &Q = operands.second;
-    const Cd_geometry geometry(P, Q);
-    Cd_filter filter(&geometry);
-    const auto bp = mesh_box(P), bq = mesh_box(Q);
+    Cd_case cd(ps, qs);
+    Cd_filter& filter = cd.filter;
     for (int k = 0; k < 40; ++k) {
       std::array<Exact_point, 2> ends;
       for (auto& e : ends) {
         e.W = Exact_nt(1);
-        for (int c = 0; c < 3; ++c)
-          e.X[c] = Exact_nt(rng.get_double(bp.first[c] + bq.first[c], bp.second[c] + bq.second[c]));
+        for (int c = 0; c < 3; ++c) e.X[c] = Exact_nt(cd.coordinate(rng, c));
       }
       if (k % 2) { // along an edge of a static triangle: parallel to its plane
-        const Tree_mesh& st = geometry.static_mesh;
+        const Tree_mesh& st = cd.geometry.static_mesh;
         const auto& tri = st.mesh->triangles[rng.get_int(0, int(st.mesh->number_of_triangles()))];
         for (int c = 0; c < 3; ++c) ends[1].X[c] = ends[0].X[c] + Exact_nt(st.base[tri[1]][c]) - Exact_nt(st.base[tri[0]][c]);
       }
@@ -443,6 +456,91 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
   INFO(in << " certainly crossing, " << out << " certainly not");
   CHECK(in > 100);   // the ranges decide both ways, often
   CHECK(out > 1000);
+}
+
+TEST_CASE("convex planar patches: a box's faces are one patch each, and their crossing sets are collisions", "[filters][islands]")
+{
+  // The island search drops a piece of a cell when one pair of convex planar patches
+  // (convex_patches.h) certainly crosses on all of it. Check the patches of boxes, and that
+  // the small triangles of translations that a patch pair's slabs put inside its crossing
+  // set are collisions (exact tests at 15 points of each), including those that no pair of
+  // their triangles' slabs holds whole (across the diagonals).
+  using namespace CGAL::Pmsum::internal;
+  const std::vector<std::pair<Soup, Soup>> cases = {
+    {box({0, 0, 0}, {1, 0.5, 0.25}), box({0, 0, 0}, {0.3, 0.7, 0.4})},
+    {tunnel_block(), turned_cube(0.5, 0.8, 0.6)},
+    {random_convex(30, 3), box({0, 0, 0}, {0.5, 0.5, 0.5})},
+  };
+  for (const auto& [ps, qs] : cases) {
+    const Cd_case cd(ps, qs);
+    for (const Convex_patches* patches : {&cd.geometry.static_patches, &cd.geometry.moving_patches}) {
+      std::size_t triangles = 0;
+      for (const Convex_patches::Patch& patch : patches->patches) {
+        CHECK(patch.corners.size() <= Convex_patches::max_corners);
+        CHECK(patch.edges.size() <= patch.corners.size());
+        triangles += patch.corners.size() - 2; // convex, no corner inside: a fan
+      }
+      CHECK(triangles == patches->of.size());
+    }
+  }
+  { // boxes: one patch per face, a rectangle (two edge directions)
+    const Cd_case cd(cases[0].first, cases[0].second);
+    for (const Convex_patches* patches : {&cd.geometry.static_patches, &cd.geometry.moving_patches}) {
+      REQUIRE(patches->patches.size() == 6);
+      for (const Convex_patches::Patch& patch : patches->patches) {
+        CHECK(patch.corners.size() == 4);
+        CHECK(patch.edges.size() == 2);
+      }
+    }
+  }
+  CGAL::Random rng(5);
+  std::size_t inside = 0, by_patches_only = 0;
+  for (const auto& [ps, qs] : cases) {
+    Cd_case cd(ps, qs);
+    Cd_filter& filter = cd.filter;
+    for (int k = 0; k < 400; ++k) {
+      // a small triangle T of translations, corners t_i
+      std::array<std::array<double, 3>, 3> t;
+      for (int c = 0; c < 3; ++c) t[0][c] = cd.coordinate(rng, c);
+      const double r = rng.get_double(0.01, 0.3);
+      for (int i = 1; i < 3; ++i)
+        for (int c = 0; c < 3; ++c) t[i][c] = t[0][c] + rng.get_double(-r, r);
+      std::array<Vec3<Interval>, 3> T;
+      for (int i = 0; i < 3; ++i) T[i] = {Interval(t[i][0]), Interval(t[i][1]), Interval(t[i][2])};
+      const Vec3<Interval> e = hull(hull(T[0], T[1]), T[2]);
+      std::map<std::pair<Index, Index>, bool> patch_pairs; // does a pair of their triangles hold T?
+      filter.for_each_overlapping_pair(e, [&](Index u, Index v) {
+        CGAL::Protect_FPU_rounding<true> guard;
+        Crossing_slabs slabs;
+        slabs.known = true;
+        for (const Crossing_slabs::Slab& slab : filter.slabs(u, v)) slabs.slabs.push_back(slab);
+        patch_pairs[{filter.moving_patch(u), filter.static_patch(v)}] |= slabs.where(T) == Crossing_slabs::Where::inside;
+        return false;
+      });
+      bool patches_inside = false, only_patches = false;
+      for (const auto& [patches, triangles] : patch_pairs) {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const bool holds = filter.patch_crossing_slabs(patches.first, patches.second, T).second == Crossing_slabs::Where::inside;
+        CHECK((!triangles || holds)); // a patch pair holds its triangles' crossing sets
+        patches_inside = patches_inside || holds;
+        only_patches = only_patches || (holds && !triangles);
+      }
+      if (!patches_inside) continue;
+      for (double a = 0; a <= 1; a += 0.25)
+        for (double b = 0; a + b <= 1; b += 0.25) {
+          std::array<double, 3> x;
+          for (int c = 0; c < 3; ++c) x[c] = (1 - a - b) * t[0][c] + a * t[1][c] + b * t[2][c];
+          INFO("translation " << x[0] << " " << x[1] << " " << x[2]);
+          CHECK(!filter.is_free_at(x));
+        }
+      ++inside;
+      by_patches_only += only_patches;
+    }
+  }
+  INFO(inside << " triangles of translations inside a patch pair's crossing set, " << by_patches_only
+              << " in no pair of their triangles'");
+  CHECK(inside > 100);
+  CHECK(by_patches_only > 10);
 }
 
 TEST_CASE("on a small grid, double arithmetic decides the predicates as exact arithmetic does", "[filters][exact]")

@@ -28,6 +28,7 @@
 #ifndef CGAL_PMSUM_INTERNAL_CD_FILTER_H
 #define CGAL_PMSUM_INTERNAL_CD_FILTER_H
 
+#include <CGAL_pmsum/internal/convex_patches.h>
 #include <CGAL_pmsum/internal/normal_filter.h>
 #include <CGAL_pmsum/internal/perturbed_predicates.h>
 
@@ -197,7 +198,7 @@ struct Crossing_slabs
   {
     Vec3<Interval> w;
     Interval lo, hi;
-    int axis; // its index among the eleven axes (Cd_filter::axis())
+    int axis; // its index among the axes of the pair (Cd_filter::axis())
 
     /// Where T lies with respect to this slab. Needs rounding towards +infinity.
     Where where(const std::array<Vec3<Interval>, 3>& T) const
@@ -226,7 +227,9 @@ struct Crossing_slabs
     return {tl, th};
   }
 
-  boost::container::static_vector<Slab, 12> slabs;
+  /// Two convex planar patches' (convex_patches.h): the normals and the edge pairs.
+  static constexpr std::size_t max_slabs = 2 + Convex_patches::max_corners * Convex_patches::max_corners;
+  boost::container::static_vector<Slab, max_slabs> slabs;
   bool known = false; // false: nothing is known (bare edges)
 
   /// inside: the pair crosses on all of T (any perturbation); outside: nowhere in T; else
@@ -275,7 +278,8 @@ struct Cd_geometry
   Cd_geometry(const Mesh_data& P, const Mesh_data& Q)
     : p(&P), q(&Q),
       p_moves(P.number_of_triangles() < Q.number_of_triangles()), static_mesh(p_moves ? Q : P, false),
-      moving_mesh(p_moves ? P : Q, true)
+      moving_mesh(p_moves ? P : Q, true), static_patches(*static_mesh.mesh, static_mesh.base),
+      moving_patches(*moving_mesh.mesh, moving_mesh.base)
   {
     // Margin for the conservative double slab tests of ray traversal.
     double scale = 1;
@@ -289,6 +293,7 @@ struct Cd_geometry
   const Mesh_data* q;
   bool p_moves; // (declared before the meshes, which it chooses)
   Tree_mesh static_mesh, moving_mesh;
+  Convex_patches static_patches, moving_patches; // of their triangles (the island search's)
   double margin;
   bool exact_doubles; // D(0) and g of every predicate are exact in double arithmetic
 };
@@ -301,7 +306,8 @@ class Cd_filter : Perturbed_predicates<Cd_filter, Moving_point>
 public:
   explicit Cd_filter(const Cd_geometry* g) // shared, not copied: threads construct their own filter
     : m_p(g->p), m_q(g->q), m_p_moves(g->p_moves), m_static(g->static_mesh), m_moving(g->moving_mesh),
-      m_margin(g->margin), m_exact_doubles(g->exact_doubles) {}
+      m_static_patches(g->static_patches), m_moving_patches(g->moving_patches), m_margin(g->margin),
+      m_exact_doubles(g->exact_doubles) {}
 
   const Cd_statistics& statistics() const { return m_stats; }
 
@@ -552,26 +558,33 @@ public:
     return r;
   }
 
-  /// The slabs of the crossing set B - A of the pair (u, v), and where the triangle T of
-  /// translations (boxes holding its corners) lies (Crossing_slabs::where()); when T is
-  /// outside, no slab is kept (they stay unknown).
+  /// The convex planar patch (convex_patches.h) of item u of the moving mesh, or of item v
+  /// of the static one. A bare edge is a patch of its own, numbered after the triangles'.
+  Index moving_patch(Index u) const { return patch_of(m_moving, m_moving_patches, u); }
+  Index static_patch(Index v) const { return patch_of(m_static, m_static_patches, v); }
+
+  /// The slabs of the crossing set B - A of the patches a (moving) and b (static), and
+  /// where the triangle T of translations (boxes holding its corners) lies
+  /// (Crossing_slabs::where()); when T is outside, no slab is kept (they stay unknown).
   /// Bare edges: nothing is known. Needs rounding towards +infinity.
-  std::pair<Crossing_slabs, Crossing_slabs::Where> crossing_slabs(Index u, Index v, const std::array<Vec3<Interval>, 3>& T) const
+  std::pair<Crossing_slabs, Crossing_slabs::Where> patch_crossing_slabs(Index a, Index b, const std::array<Vec3<Interval>, 3>& T) const
   {
     using Where = Crossing_slabs::Where;
     std::pair<Crossing_slabs, Where> r{{}, Where::border};
-    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
+    if (a >= m_moving_patches.patches.size() || b >= m_static_patches.patches.size()) return r;
     r.first.known = true;
     bool inside = true;
-    for_each_slab(u, v, [&](int k, const Vec3<Interval>& w, const Interval& lo, const Interval& hi) {
-      const Crossing_slabs::Slab s{w, lo, hi, k};
+    for (const Crossing_slabs::Slab& s : m_patch_slabs.get(a, b, [&] {
+           Patch_slabs slabs;
+           polygon_slabs(patch_polygon(m_moving, m_moving_patches, a), patch_polygon(m_static, m_static_patches, b), slabs);
+           return slabs;
+         })) {
       const Where where = s.where(T);
-      if (where == Where::outside) { r = {{}, where}; return false; } // the slabs stay unknown
+      if (where == Where::outside) return {{}, where}; // the slabs stay unknown
       inside = inside && where == Where::inside;
       r.first.slabs.push_back(s);
-      return true;
-    });
-    if (r.second != Where::outside && inside) r.second = Where::inside;
+    }
+    if (inside) r.second = Where::inside;
     return r;
   }
 
@@ -595,21 +608,56 @@ public:
     });
   }
 
-  /// Axis k of the eleven normal to the facets of B - A (A: moving triangle u, B: static
-  /// triangle v): the normal of A, of B, then the cross products of edge i of A and edge j
-  /// of B (k = 2 + 3i + j), unnormalised; Interval: an enclosure.
+  /// A convex polygon of one mesh: a triangle, or a convex planar patch (convex_patches.h):
+  /// its corners, one edge per direction, and the triangle whose normal is its normal.
+  struct Polygon
+  {
+    const Tree_mesh* mesh;
+    boost::container::static_vector<Index, Convex_patches::max_corners> corners;
+    boost::container::static_vector<std::array<Index, 2>, Convex_patches::max_corners> edges;
+    Index triangle;
+  };
+  static Polygon triangle_polygon(const Tree_mesh& m, Index t)
+  {
+    const auto& tri = m.mesh->triangles[t];
+    return {&m, {tri[0], tri[1], tri[2]}, {{tri[0], tri[1]}, {tri[1], tri[2]}, {tri[2], tri[0]}}, t};
+  }
+  static Polygon patch_polygon(const Tree_mesh& m, const Convex_patches& patches, Index i)
+  {
+    const Convex_patches::Patch& p = patches.patches[i];
+    return {&m, {p.corners.begin(), p.corners.end()}, {p.edges.begin(), p.edges.end()}, p.triangle};
+  }
+
+  static Index patch_of(const Tree_mesh& m, const Convex_patches& patches, Index item)
+  { return m.is_edge(item) ? Index(patches.patches.size() + (item - m.triangles.size())) : patches.of[item]; }
+
+  /// Number of axes of the facets of B - A (A moving, B static): the normals of A and B,
+  /// then the cross products of an edge direction of each.
+  static int axis_count(const Polygon& A, const Polygon& B) { return 2 + int(A.edges.size() * B.edges.size()); }
+
+  /// Axis k of those normal to the facets of B - A: the normal of A, of B, then the cross
+  /// product of edge i of A and edge j of B (k = 2 + |edges of B| i + j), unnormalised;
+  /// Interval: an enclosure.
   template <class NT>
-  Vec3<NT> axis(Index u, Index v, int k) const
+  static Vec3<NT> axis(const Polygon& A, const Polygon& B, int k)
   {
     if constexpr (std::is_same<NT, Interval>::value)
-      if (k < 2) return k == 0 ? m_moving.normals[u] : m_static.normals[v];
-    auto edge = [](const Tree_mesh& m, Index t, int i) {
-      const auto& tri = m.mesh->triangles[t];
-      return to_nt<NT>(m.base[tri[(i + 1) % 3]]) - to_nt<NT>(m.base[tri[i]]);
+      if (k < 2) return k == 0 ? A.mesh->normals[A.triangle] : B.mesh->normals[B.triangle];
+    auto edge = [](const Polygon& p, const std::array<Index, 2>& e) {
+      return to_nt<NT>(p.mesh->base[e[1]]) - to_nt<NT>(p.mesh->base[e[0]]);
     };
-    if (k < 2) return k == 0 ? cross(edge(m_moving, u, 0), edge(m_moving, u, 1)) : cross(edge(m_static, v, 0), edge(m_static, v, 1));
-    return cross(edge(m_moving, u, (k - 2) / 3), edge(m_static, v, (k - 2) % 3));
+    if (k < 2) {
+      const Polygon& p = k == 0 ? A : B;
+      const auto& tri = p.mesh->mesh->triangles[p.triangle];
+      return cross(edge(p, {tri[0], tri[1]}), edge(p, {tri[1], tri[2]}));
+    }
+    const std::size_t n = B.edges.size();
+    return cross(edge(A, A.edges[std::size_t(k - 2) / n]), edge(B, B.edges[std::size_t(k - 2) % n]));
   }
+  /// Axis k of the triangles u (moving) and v (static).
+  template <class NT>
+  Vec3<NT> axis(Index u, Index v, int k) const
+  { return axis<NT>(triangle_polygon(m_moving, u), triangle_polygon(m_static, v), k); }
 
   /// Calls f(k, w, lo, hi) for the eleven axes w = axis(u, v, k): lo < w.t < hi for every
   /// t in B - A (enclosures), until f returns false. Skips zero axes. A pair's slabs depend
@@ -622,25 +670,32 @@ public:
       if (!f(s.axis, s.w, s.lo, s.hi)) return;
   }
 
-  /// The slabs of B - A (triangles A = u, B = v) along its non-zero axes: w, and the extent
-  /// [lo, hi] of B - A along w (any w: B - A is the convex hull of the B_k - A_i):
-  /// lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i. Cached. Needs rounding
-  /// towards +infinity.
+  /// The slabs of B - A (triangles A = u, B = v) along its non-zero axes. Cached. Needs
+  /// rounding towards +infinity.
   using Pair_slabs = boost::container::static_vector<Crossing_slabs::Slab, 11>;
   const Pair_slabs& slabs(Index u, Index v) const
   {
     return m_slabs.get(u, v, [&] {
       Pair_slabs r;
-      for (int k = 0; k < 11; ++k) {
-        const Vec3<Interval> w = axis<Interval>(u, v, k);
-        if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 &&
-            w[2].inf() == 0)
-          continue;
-        const auto a = extremes(m_moving, u, w), b = extremes(m_static, v, w);
-        r.push_back({w, b.first - a.second, b.second - a.first, k});
-      }
+      polygon_slabs(triangle_polygon(m_moving, u), triangle_polygon(m_static, v), r);
       return r;
     });
+  }
+
+  /// Appends to r the slabs of B - A (A moving, B static) along its non-zero axes: w, and
+  /// the extent [lo, hi] of B - A along w (any w: B - A is the convex hull of the B_k - A_i):
+  /// lo = min_k w.B_k - max_i w.A_i, hi = max_k w.B_k - min_i w.A_i. Needs rounding towards
+  /// +infinity.
+  template <class Slabs>
+  static void polygon_slabs(const Polygon& A, const Polygon& B, Slabs& r)
+  {
+    for (int k = 0; k < axis_count(A, B); ++k) {
+      const Vec3<Interval> w = axis<Interval>(A, B, k);
+      if (w[0].is_point() && w[1].is_point() && w[2].is_point() && w[0].inf() == 0 && w[1].inf() == 0 && w[2].inf() == 0)
+        continue;
+      const auto a = extremes(A, w), b = extremes(B, w);
+      r.push_back({w, b.first - a.second, b.second - a.first, k});
+    }
   }
 
   /// Starts a plane H of translations, that of the triangle T with corners p_k + q_k
@@ -680,6 +735,7 @@ public:
     std::tie(p.low, p.high) = Crossing_slabs::extent(p.normal, e);
     ++p.stamp;
     p.crossings.clear();
+    p.patch_crossings.clear();
     p.moving.resize(m_moving.mesh->number_of_triangles());
     p.fixed.resize(m_static.mesh->number_of_triangles());
   }
@@ -695,30 +751,40 @@ public:
   struct Plane_crossing
   {
     bool never = false;
-    std::uint16_t ignored = 0;
+    std::uint64_t ignored = 0; // bit k: axis k
   };
   const Plane_crossing& on_plane(Index u, Index v)
   {
-    return m_plane.crossings.get(u, v, [&] { return plane_crossing(u, v); });
+    return m_plane.crossings.get(u, v, [&] {
+      if (m_moving.is_edge(u) || m_static.is_edge(v)) return Plane_crossing{};
+      return plane_crossing(triangle_polygon(m_moving, u), triangle_polygon(m_static, v));
+    });
+  }
+  /// on_plane() of the patches a (moving) and b (static); bare edges: nothing is known.
+  const Plane_crossing& patch_on_plane(Index a, Index b)
+  {
+    return m_plane.patch_crossings.get(a, b, [&] {
+      if (a >= m_moving_patches.patches.size() || b >= m_static_patches.patches.size()) return Plane_crossing{};
+      return plane_crossing(patch_polygon(m_moving, m_moving_patches, a), patch_polygon(m_static, m_static_patches, b));
+    });
   }
 
-  /// Does the slab of the pair (u, v) normal to the plane H set by set_plane() hold every
-  /// point of H, perturbed: H strictly inside it, or on its border with the perturbation
-  /// moving H's points into it? Exact.
-  bool slab_normal_to_plane_holds(Index u, Index v) const
+  /// Does the slab of the polygons A (moving) and B (static) normal to the plane H set by
+  /// set_plane() hold every point of H, perturbed: H strictly inside it, or on its border
+  /// with the perturbation moving H's points into it? Exact.
+  bool slab_normal_to_plane_holds(const Polygon& A, const Polygon& B) const
   {
     const Plane& p = m_plane;
-    auto range = [&](const Tree_mesh& m, Index t) { // of W n.x over the triangle's corners
-      const auto& tri = m.mesh->triangles[t];
+    auto range = [&](const Polygon& m) { // of W n.x over the polygon's corners
       std::pair<Exact_nt, Exact_nt> e;
-      for (int i = 0; i < 3; ++i) {
-        const Exact_nt y = dot(p.exact_normal, to_nt<Exact_nt>(m.base[tri[i]])) * p.exact_point.W;
+      for (std::size_t i = 0; i < m.corners.size(); ++i) {
+        const Exact_nt y = dot(p.exact_normal, to_nt<Exact_nt>(m.mesh->base[m.corners[i]])) * p.exact_point.W;
         if (i == 0 || y < e.first) e.first = y;
         if (i == 0 || y > e.second) e.second = y;
       }
       return e;
     };
-    const auto a = range(m_moving, u), b = range(m_static, v);
+    const auto a = range(A), b = range(B);
     const Exact_nt h = dot(p.exact_normal, p.exact_point.X), lo = b.first - a.second, hi = b.second - a.first;
     if (lo < h && h < hi) return true;
     return lo < hi && ((h == lo && p.side == CGAL::POSITIVE) || (h == hi && p.side == CGAL::NEGATIVE));
@@ -734,7 +800,7 @@ public:
       Plane::Extent& e = memo[t];
       if (e.stamp != m_plane.stamp) {
         e.stamp = m_plane.stamp;
-        e.range = extremes(m, t, m_plane.normal);
+        e.range = extremes(triangle_polygon(m, t), m_plane.normal);
       }
       return e;
     };
@@ -743,39 +809,37 @@ public:
   }
 
 private:
-  /// on_plane(u, v), computed.
-  Plane_crossing plane_crossing(Index u, Index v) const
+  /// on_plane() of the polygons A (moving) and B (static), computed.
+  Plane_crossing plane_crossing(const Polygon& A, const Polygon& B) const
   {
     Plane_crossing r;
-    if (m_moving.is_edge(u) || m_static.is_edge(v)) return r;
     const Plane& p = m_plane;
     std::optional<bool> holds; // does the slab normal to H hold every point of H, perturbed?
-    for (int k = 0; k < 11 && !r.never; ++k) {
+    for (int k = 0; k < axis_count(A, B) && !r.never; ++k) {
       {
         CGAL::Protect_FPU_rounding<true> guard;
-        const Vec3<Interval> w = cross(axis<Interval>(u, v, k), p.normal);
+        const Vec3<Interval> w = cross(axis<Interval>(A, B, k), p.normal);
         if (!(w[0].do_overlap(0) && w[1].do_overlap(0) && w[2].do_overlap(0))) continue; // not normal to H
       }
-      const Vec3<Exact_nt> x = axis<Exact_nt>(u, v, k);
-      if (is_null(x)) { r.ignored |= std::uint16_t(1) << k; continue; } // no slab (its enclosure may not show it)
+      const Vec3<Exact_nt> x = axis<Exact_nt>(A, B, k);
+      if (is_null(x)) { r.ignored |= std::uint64_t(1) << k; continue; } // no slab (its enclosure may not show it)
       if (!is_null(cross(x, p.exact_normal))) continue;                   // not normal to H
       // Every axis normal to H gives the same slab: the extent of B - A along H's normal n,
       // compared with H's position n.X / W once.
-      if (!holds) holds = slab_normal_to_plane_holds(u, v);
-      if (*holds) r.ignored |= std::uint16_t(1) << k;
+      if (!holds) holds = slab_normal_to_plane_holds(A, B);
+      if (*holds) r.ignored |= std::uint64_t(1) << k;
       else r.never = true;
     }
     return r;
   }
 
-  /// Enclosures of the minimum and the maximum of w.x over the corners x of triangle t of m.
+  /// Enclosures of the minimum and the maximum of w.x over the corners x of polygon A.
   /// Needs rounding towards +infinity.
-  static std::pair<Interval, Interval> extremes(const Tree_mesh& m, Index t, const Vec3<Interval>& w)
+  static std::pair<Interval, Interval> extremes(const Polygon& A, const Vec3<Interval>& w)
   {
-    const auto& tri = m.mesh->triangles[t];
-    Interval lo = dot(w, to_nt<Interval>(m.base[tri[0]])), hi = lo;
-    for (int k = 1; k < 3; ++k) {
-      const Interval x = dot(w, to_nt<Interval>(m.base[tri[k]]));
+    Interval lo = dot(w, to_nt<Interval>(A.mesh->base[A.corners[0]])), hi = lo;
+    for (std::size_t k = 1; k < A.corners.size(); ++k) {
+      const Interval x = dot(w, to_nt<Interval>(A.mesh->base[A.corners[k]]));
       lo = Interval((std::min)(lo.inf(), x.inf()), (std::min)(lo.sup(), x.sup()));
       hi = Interval((std::max)(hi.inf(), x.inf()), (std::max)(hi.sup(), x.sup()));
     }
@@ -1178,6 +1242,8 @@ private:
   bool m_p_moves; // Cd_geometry::p_moves
   const Tree_mesh& m_static;
   const Tree_mesh& m_moving;
+  const Convex_patches& m_static_patches;
+  const Convex_patches& m_moving_patches;
   double m_margin;
   bool m_exact_doubles;
   Cd_statistics m_stats;
@@ -1214,8 +1280,11 @@ private:
     std::uint64_t stamp = 0;
     std::vector<Extent> moving, fixed;
     Pair_cache<Plane_crossing> crossings; // on_plane(), of the pairs met
+    Pair_cache<Plane_crossing> patch_crossings; // patch_on_plane(), of the patch pairs met
   } m_plane;
   mutable Pair_cache<Pair_slabs> m_slabs; // slabs()
+  using Patch_slabs = boost::container::static_vector<Crossing_slabs::Slab, Crossing_slabs::max_slabs>;
+  mutable Pair_cache<Patch_slabs> m_patch_slabs; // patch_crossing_slabs()
   mutable Pair_cache<bool> m_parallel;    // parallel_triangles(), where intervals do not tell
   Fact_cache<Predicate_key, Affine_predicate, Predicate_key_hash> m_affine_forms; // exact_affine_form()
   Affine_predicate m_affine_form; // exact_affine_form(), of points not cached

@@ -48,6 +48,16 @@
 // T's, and most cells need none. (Bare edges have no slabs: a sub-cell left with only those
 // is not halved further.)
 //
+// The pairs of the halving are pairs of convex planar patches (convex_patches.h: a box's
+// square face is one patch, not two triangles). A patch pair's crossing set holds its
+// triangle pairs' and the seams between them, where no triangle pair alone covers a
+// sub-cell. Every point in it is a collision, so no island's edge lies inside it, and the
+// argument above holds for patch pairs as for triangle pairs. The lines searched stay those
+// of the triangle pairs whose own crossing sets' borders may cross T, in the leaves where
+// their patch pair was kept. (blocks + cube, d = 2%: the halving's cost is gone, the island
+// search about 30% cheaper, the same points. The rotated narrow tunnel's cells keep their
+// lines: they lie along true borders, where two pairs' sets meet; no change there.)
+//
 // The cells lie in the plane H of their facet, whose points are all perturbed to the same
 // side of H. A pair whose crossing set has H as a supporting plane (coplanar faces) would
 // never be decided by intervals: the slab normal to H has H on its border. But on H the
@@ -64,6 +74,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -111,8 +122,8 @@ public:
     Sub_cell whole{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, 0, {}};
     for (int k = 0; k < 3; ++k) whole.e[k] = m_e[k] = enclosure(T[k]);
     m_pairs.clear();
-    std::vector<std::uint32_t> border; // of m_pairs: those whose crossing sets' borders may cross T
-    // Neighbouring cells are often covered by the same pair: the last ones that did first.
+    m_cell_patches.clear();
+    // Neighbouring cells are often covered by the same patch pair: the last ones that did first.
     for (const auto& pair : m_recent_covers)
       if (pair && crossing_slabs(*pair, whole.e).second == Where::inside) return {};
     bool covered = false;
@@ -121,16 +132,30 @@ public:
         CGAL::Protect_FPU_rounding<true> guard;
         if (!m_filter.may_meet_plane(u, v)) return false;
       }
-      auto [slabs, w] = crossing_slabs({u, v}, whole.e);
-      if (w == Where::border) {
-        border.push_back(std::uint32_t(m_pairs.size()));
-        m_pairs.push_back({{u, v}, std::move(slabs), &on_plane({u, v})});
+      const Pair patches(m_filter.moving_patch(u), m_filter.static_patch(v));
+      auto [it, first] = m_cell_patches.emplace(pair_key(patches.first, patches.second), no_index);
+      if (first) {
+        auto [slabs, w] = crossing_slabs(patches, whole.e);
+        if (w == Where::inside) {
+          m_recent_covers[m_next_recent++ % m_recent_covers.size()] = patches;
+          return covered = true;
+        }
+        if (w == Where::border) {
+          it->second = Index(m_pairs.size());
+          m_pairs.push_back({patches, std::move(slabs), {}});
+        }
       }
-      if (w != Where::inside) return false;
-      m_recent_covers[m_next_recent++ % m_recent_covers.size()] = Pair(u, v);
-      return covered = true;
+      // The item pair's lines are searched only if its own crossing set's border may cross T.
+      if (it->second == no_index) return false;
+      Cell_pair& cell_pair = m_pairs[it->second];
+      Plane_pair& plane = on_plane({u, v});
+      if (!cell_pair.slabs.known || pair_where({u, v}, plane, whole.e) == Where::border)
+        cell_pair.members.push_back({{u, v}, &plane});
+      return false;
     });
-    if (covered || border.empty()) return {};
+    if (covered || m_pairs.empty()) return {};
+    std::vector<std::uint32_t> border(m_pairs.size()); // of m_pairs: those whose crossing sets' borders may cross T
+    std::iota(border.begin(), border.end(), 0);
     m_T = T; // over a common denominator: the sub-cells' corners are integer combinations
     if (!(T[0].W == T[1].W && T[1].W == T[2].W))
       for (int k = 0; k < 3; ++k) {
@@ -179,18 +204,42 @@ private:
     return it->second;
   }
 
-  /// The slabs of the pair's crossing set on the facet's plane, and where the triangle e of
-  /// translations (boxes) lies: Cd_filter::crossing_slabs(), and if that leaves it
-  /// undecided, what Cd_filter::on_plane() knows.
-  std::pair<Crossing_slabs, Where> crossing_slabs(const Pair& pair, const std::array<Vec3<Interval>, 3>& e)
+  /// The slabs of the crossing set of a pair of patches (Cd_filter::moving_patch(),
+  /// static_patch()) on the facet's plane, and where the triangle e of translations (boxes)
+  /// lies: Cd_filter::patch_crossing_slabs(), and if that leaves it undecided, what
+  /// Cd_filter::patch_on_plane() knows.
+  std::pair<Crossing_slabs, Where> crossing_slabs(const Pair& patches, const std::array<Vec3<Interval>, 3>& e)
   {
     std::pair<Crossing_slabs, Where> r;
     {
       CGAL::Protect_FPU_rounding<true> guard;
-      r = m_filter.crossing_slabs(pair.first, pair.second, e);
+      r = m_filter.patch_crossing_slabs(patches.first, patches.second, e);
     }
     if (r.second != Where::border || !r.first.known) return r;
-    const Cd_filter::Plane_crossing& c = on_plane(pair).crossing;
+    return with_plane(std::move(r.first), m_filter.patch_on_plane(patches.first, patches.second), e);
+  }
+
+  /// Where the triangle e lies with respect to the crossing set of the item pair (two
+  /// triangles), with what `plane` knows of it.
+  Where pair_where(const Pair& pair, const Plane_pair& plane, const std::array<Vec3<Interval>, 3>& e)
+  {
+    Crossing_slabs slabs;
+    slabs.known = true;
+    Where w;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      for (const Crossing_slabs::Slab& s : m_filter.slabs(pair.first, pair.second)) slabs.slabs.push_back(s);
+      w = slabs.where(e);
+    }
+    return w == Where::border ? with_plane(std::move(slabs), plane.crossing, e).second : w;
+  }
+
+  /// The slabs of a crossing set whose border may cross the triangle e, and where e lies,
+  /// once what is known of the set on the facet's plane (c) is used.
+  static std::pair<Crossing_slabs, Where> with_plane(Crossing_slabs set, const Cd_filter::Plane_crossing& c,
+                                                     const std::array<Vec3<Interval>, 3>& e)
+  {
+    std::pair<Crossing_slabs, Where> r{std::move(set), Where::border};
     if (c.never) return {{}, Where::outside};
     if (c.ignored == 0) return r;
     auto& slabs = r.first.slabs;
@@ -201,12 +250,19 @@ private:
     return r;
   }
 
-  /// A pair that may cross in the current cell, with its crossing set's slabs.
-  struct Cell_pair
+  /// An item pair met in the current cell, with what is known of it on the facet's plane.
+  struct Member
   {
     Pair pair;
-    Crossing_slabs slabs;
     Plane_pair* plane;
+  };
+  /// A pair of patches that may cross in the current cell, with its crossing set's slabs
+  /// and its item pairs met there.
+  struct Cell_pair
+  {
+    Pair patches;
+    Crossing_slabs slabs;
+    std::vector<Member> members;
   };
 
   /// w.x at the corners x of a sub-cell (enclosures), for one slab w of a pair.
@@ -329,20 +385,21 @@ private:
     std::array<Exact_point, 3> corners;
     for (int k = 0; k < 3; ++k) corners[k] = exact_point(T.corner[k], T.depth);
     m_lines.clear();
-    for (std::uint32_t i : pairs) {
-      const Pair& pair = m_pairs[i].pair;
-      Plane_pair& plane = *m_pairs[i].plane;
-      m_pair_lines.clear();
-      std::uint32_t bit = 1;
-      m_filter.for_each_predicate(pair.first, pair.second,
-                                  [&](const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d) {
-                                    if (!m_found && !(plane.flat & bit) && meets_leaf(leaves[i], a, b, c, d) &&
-                                        !search_line(corners, pair, pairs, a, b, c, d))
-                                      plane.flat |= bit;
-                                    bit <<= 1;
-                                  });
-      if (m_found) return;
-    }
+    for (std::uint32_t i : pairs)
+      for (const Member& member : m_pairs[i].members) {
+        const Pair& pair = member.pair;
+        Plane_pair& plane = *member.plane;
+        m_pair_lines.clear();
+        std::uint32_t bit = 1;
+        m_filter.for_each_predicate(pair.first, pair.second,
+                                    [&](const Moving_point& a, const Moving_point& b, const Moving_point& c, const Moving_point& d) {
+                                      if (!m_found && !(plane.flat & bit) && meets_leaf(leaves[i], a, b, c, d) &&
+                                          !search_line(corners, pair, pairs, a, b, c, d))
+                                        plane.flat |= bit;
+                                      bit <<= 1;
+                                    });
+        if (m_found) return;
+      }
   }
 
   /// May the zero line of the predicate (a, b, c, d) cross one of the `leaves` (intervals)?
@@ -433,10 +490,11 @@ private:
     auto covers = [&](const Pair& pair) { return m_filter.crossing_range(pair.first, pair.second, a, b).covers_segment(); };
     if (m_last_cover && covers(*m_last_cover)) return true;
     for (std::uint32_t i : pairs)
-      if (m_pairs[i].pair != m_last_cover && covers(m_pairs[i].pair)) {
-        m_last_cover = m_pairs[i].pair;
-        return true;
-      }
+      for (const Member& member : m_pairs[i].members)
+        if (member.pair != m_last_cover && covers(member.pair)) {
+          m_last_cover = member.pair;
+          return true;
+        }
     return false;
   }
 
@@ -493,7 +551,8 @@ private:
   std::array<Vec3<Interval>, 3> m_e;       // and their enclosures
   std::vector<Cell_pair> m_pairs;          // whose crossing sets' borders may cross the current cell
   std::unordered_map<std::uint64_t, Plane_pair> m_on_plane; // of the pairs met in the current facet
-  std::array<std::optional<Pair>, 4> m_recent_covers; // the last pairs that covered a cell
+  std::unordered_map<std::uint64_t, Index> m_cell_patches; // patch pairs met in the current cell: their index in m_pairs, or no_index
+  std::array<std::optional<Pair>, 4> m_recent_covers; // the last patch pairs that covered a cell
   std::size_t m_next_recent = 0;
   std::optional<Pair> m_last_cover;        // the last pair that hid a line
   struct Leaf
