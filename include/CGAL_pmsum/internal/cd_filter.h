@@ -1283,7 +1283,7 @@ private:
     Pair_cache<Plane_crossing> patch_crossings; // patch_on_plane(), of the patch pairs met
   } m_plane;
   mutable Pair_cache<Pair_slabs> m_slabs; // slabs()
-  using Patch_slabs = boost::container::static_vector<Crossing_slabs::Slab, Crossing_slabs::max_slabs>;
+  using Patch_slabs = std::vector<Crossing_slabs::Slab>; // (as many as they have: up to max_slabs)
   mutable Pair_cache<Patch_slabs> m_patch_slabs; // patch_crossing_slabs()
   mutable Pair_cache<bool> m_parallel;    // parallel_triangles(), where intervals do not tell
   Fact_cache<Predicate_key, Affine_predicate, Predicate_key_hash> m_affine_forms; // exact_affine_form()
