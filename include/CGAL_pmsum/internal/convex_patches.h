@@ -32,6 +32,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -111,18 +112,21 @@ private:
         grown = true;
       }
     }
-    // One border edge per direction.
+    // One border edge per direction (exact; intervals decide nearly every pair of directions).
+    auto parallel = [&](const std::array<Index, 2>& e, const std::array<Index, 2>& f) {
+      for (int c = 0; c < 3; ++c)
+        if (filtered_sign([&](auto nt) {
+              using NT = decltype(nt);
+              return cross(to_nt<NT>(points[e[1]]) - to_nt<NT>(points[e[0]]), to_nt<NT>(points[f[1]]) - to_nt<NT>(points[f[0]]))[c];
+            }) != CGAL::ZERO)
+          return false;
+      return true;
+    };
     const std::size_t k = patch.corners.size();
     for (std::size_t i = 0; i < k; ++i) {
-      const Index a = patch.corners[i], b = patch.corners[(i + 1) % k];
-      const Vec3<Exact_nt> d = to_nt<Exact_nt>(points[b]) - to_nt<Exact_nt>(points[a]);
-      bool parallel = false;
-      for (const auto& f : patch.edges) {
-        const Vec3<Exact_nt> g = to_nt<Exact_nt>(points[f[1]]) - to_nt<Exact_nt>(points[f[0]]);
-        const Vec3<Exact_nt> x = cross(d, g);
-        parallel = parallel || (CGAL::is_zero(x[0]) && CGAL::is_zero(x[1]) && CGAL::is_zero(x[2]));
-      }
-      if (!parallel) patch.edges.push_back({a, b});
+      const std::array<Index, 2> e = {patch.corners[i], patch.corners[(i + 1) % k]};
+      if (std::none_of(patch.edges.begin(), patch.edges.end(), [&](const std::array<Index, 2>& f) { return parallel(e, f); }))
+        patch.edges.push_back(e);
     }
     patches.push_back(std::move(patch));
   }
