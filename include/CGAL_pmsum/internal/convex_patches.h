@@ -29,12 +29,12 @@
 
 #include <CGAL_pmsum/internal/exact_sign.h>
 #include <CGAL_pmsum/internal/mesh_data.h>
+#include <CGAL_pmsum/internal/planar_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -77,14 +77,12 @@ private:
     std::vector<Index> owner = {t, t, t}; // the triangle of each border edge (corner i to i + 1)
     auto p3 = [&](Index v) { return K::Point_3(points[v][0], points[v][1], points[v][2]); };
     // The coordinate plane the normal is most aligned with, and the orientation of the
-    // patch's triangles there (exact).
-    const Vec3<double> n = triangle_normal<double>(points[tri[0]], points[tri[1]], points[tri[2]]);
-    int drop = 0;
-    for (int c = 1; c < 3; ++c)
-      if (std::abs(n[c]) > std::abs(n[drop])) drop = c;
+    // patch's triangles there (exact): the sign of the normal's component off that plane.
+    const auto axis = planar_patches::projection_axis(points[tri[0]], points[tri[1]], points[tri[2]]);
+    const int drop = axis ? axis->first : 0;
+    const CGAL::Orientation sense = axis ? axis->second : CGAL::COLLINEAR;
     auto p2 = [&](Index v) { return K::Point_2(points[v][(drop + 1) % 3], points[v][(drop + 2) % 3]); };
     auto turn = [&](Index a, Index b, Index c) { return CGAL::orientation(p2(a), p2(b), p2(c)); };
-    const CGAL::Orientation sense = turn(tri[0], tri[1], tri[2]);
     auto reflex = [&](Index a, Index b, Index c) { const CGAL::Orientation o = turn(a, b, c); return o != CGAL::COLLINEAR && o != sense; };
     for (bool grown = sense != CGAL::COLLINEAR; grown;) {
       grown = false;
