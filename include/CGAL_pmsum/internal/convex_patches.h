@@ -75,7 +75,10 @@ private:
     const auto& tri = m.triangles[t];
     Patch patch{{tri[0], tri[1], tri[2]}, {}, t};
     std::vector<Index> owner = {t, t, t}; // the triangle of each border edge (corner i to i + 1)
-    auto p3 = [&](Index v) { return K::Point_3(points[v][0], points[v][1], points[v][2]); };
+    auto corners = [&](Index f) -> planar_patches::Corners {
+      const auto& c = m.triangles[f];
+      return {points[c[0]], points[c[1]], points[c[2]]};
+    };
     // The coordinate plane the normal is most aligned with, and the orientation of the
     // patch's triangles there (exact): the sign of the normal's component off that plane.
     const auto axis = planar_patches::projection_axis(points[tri[0]], points[tri[1]], points[tri[2]]);
@@ -96,11 +99,9 @@ private:
         const Mesh_data::Edge& edge = m.edges[e];
         const Index w = edge.f[0] == u ? edge.f[1] : edge.f[0];
         if (w == no_index || of[w] != no_index) continue;
-        const Index c = m.opposite_vertex(u, e), d = m.opposite_vertex(w, e);
-        // coplanar, and d beyond the edge (the same side of the plane), keeping the union convex
-        if (CGAL::orientation(p3(a), p3(b), p3(c), p3(d)) != CGAL::COPLANAR ||
-            CGAL::coplanar_orientation(p3(a), p3(b), p3(c), p3(d)) != CGAL::NEGATIVE)
-          continue;
+        const Index d = m.opposite_vertex(w, e);
+        // coplanar, facing the same way, keeping the union convex
+        if (!planar_patches::flat_neighbours(corners(u), corners(w), points[d])) continue;
         const Index before = patch.corners[(i + k - 1) % k], after = patch.corners[(i + 2) % k];
         if (reflex(before, a, d) || reflex(d, b, after)) continue;
         of[w] = id;

@@ -142,7 +142,7 @@ public:
         }
         if (w == Where::border) {
           it->second = Index(m_pairs.size());
-          m_pairs.push_back({patches, std::move(slabs), {}});
+          m_pairs.push_back({std::move(slabs), {}});
         }
       }
       // The item pair's lines are searched only if its own crossing set's border may cross T.
@@ -256,11 +256,10 @@ private:
     Pair pair;
     Plane_pair* plane;
   };
-  /// A pair of patches that may cross in the current cell, with its crossing set's slabs
-  /// and its item pairs met there.
+  /// A pair of patches that may cross in the current cell: its crossing set's slabs and its
+  /// item pairs met there.
   struct Cell_pair
   {
-    Pair patches;
     Crossing_slabs slabs;
     std::vector<Member> members;
   };

@@ -79,6 +79,21 @@ inline std::optional<std::pair<int, CGAL::Sign>> projection_axis(const std::arra
   return std::make_pair(k, sign);
 }
 
+using Corners = std::array<std::array<double, 3>, 3>;
+
+/// Are two triangles that share an edge exactly coplanar, facing the same way (the dot
+/// product of their normals is positive; false if either is degenerate)? `far`: the corner
+/// of t off the shared edge.
+inline bool flat_neighbours(const Corners& s, const Corners& t, const std::array<double, 3>& far)
+{
+  auto normal = [](const Corners& c, auto nt) { return triangle_normal<decltype(nt)>(c[0], c[1], c[2]); };
+  const bool coplanar = filtered_sign([&](auto nt) {
+    using NT = decltype(nt);
+    return dot(to_nt<NT>(far) - to_nt<NT>(s[0]), normal(s, nt));
+  }) == CGAL::ZERO;
+  return coplanar && filtered_sign([&](auto nt) { return dot(normal(s, nt), normal(t, nt)); }) == CGAL::POSITIVE;
+}
+
 using Id = std::uint32_t;
 constexpr Id none = std::numeric_limits<Id>::max();
 
@@ -116,8 +131,7 @@ struct Merger
     find_patches();
   }
 
-  template <class NT> Vec3<NT> normal(Id t) const
-  { return triangle_normal<NT>(P[T[t][0]], P[T[t][1]], P[T[t][2]]); }
+  Corners corners(Id t) const { return {P[T[t][0]], P[T[t][1]], P[T[t][2]]}; }
   Id head(Id h) const { return T[h / 3][(h % 3 + 1) % 3]; }
   Id tail(Id h) const { return T[h / 3][h % 3]; }
   bool patch_border(Id h) const { return twin[h] == none || patch[twin[h] / 3] != patch[h / 3]; }
@@ -132,14 +146,7 @@ struct Merger
       if (twin[h] == none || twin[h] < h) continue;
       const Id t0 = h / 3, t1 = twin[h] / 3;
       const Id far = T[t1][(twin[h] % 3 + 2) % 3];
-      const bool coplanar = filtered_sign([&](auto nt) {
-        using NT = decltype(nt);
-        return dot(to_nt<NT>(P[far]) - to_nt<NT>(P[tail(h)]), normal<NT>(t0));
-      }) == CGAL::ZERO;
-      if (coplanar && filtered_sign([&](auto nt) {
-            using NT = decltype(nt);
-            return dot(normal<NT>(t0), normal<NT>(t1));
-          }) == CGAL::POSITIVE) {
+      if (flat_neighbours(corners(t0), corners(t1), P[far])) {
         const Id a = find(t0), b = find(t1);
         patch[std::max(a, b)] = std::min(a, b);
       }
