@@ -565,9 +565,10 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
 
   const auto [hook_a, hook_b] = pmsum_shapes::hooks_pair();
   const std::vector<std::pair<Soup, Soup>> cases = {
-    {l_shape(), tetrahedron(0.75)}, {hook_a, hook_b}, {tunnel_block(), box({0, 0, 0}, {1, 1, 1})}};
+    {l_shape(), tetrahedron(0.75)}, {hook_a, hook_b}, {tunnel_block(), box({0, 0, 0}, {1, 1, 1})},
+    {box({0, 0, 0}, {3, 2, 2}), box({0, 0, 0}, {0.25, 0.125, 0.25})}};
   CGAL::Random rng(5);
-  std::size_t free_contacts = 0, inside = 0, segments = 0, ends_found = 0;
+  std::size_t free_contacts = 0, inside = 0, segments = 0, ends_found = 0, contained_starts = 0;
   for (const auto& [ps, qs] : cases) {
     const auto operands = cd_operands(ps, qs);
     const Mesh_data &P = operands.first, &Q = operands.second;
@@ -588,9 +589,29 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
       (is_free ? free_contacts : inside) += 1;
     }
     Segment_search sd(fd), se(fe);
-    for (int k = 0; k < 60; ++k) {
-      const auto a = contact(), b = contact();
+    // A translation in the box of the sum (on a grid of 1/64): often inside by containment,
+    // where no pair crosses (the segment search then knows its first element without a test).
+    std::array<double, 3> lo = {0, 0, 0}, hi = {0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      auto coordinate = [c](const std::array<double, 3>& x) { return x[c]; };
+      auto range = [&](const Mesh_data& M) {
+        const auto [l, h] = std::minmax_element(M.points.begin(), M.points.end(),
+                                                [&](const auto& x, const auto& y) { return coordinate(x) < coordinate(y); });
+        return std::make_pair(coordinate(*l), coordinate(*h));
+      };
+      lo[c] = range(P).first + range(Q).first;
+      hi[c] = range(P).second + range(Q).second;
+    }
+    auto anywhere = [&] {
+      std::array<double, 3> t;
+      for (int c = 0; c < 3; ++c) t[c] = std::round(rng.get_double(lo[c], hi[c]) * 64) / 64;
+      return t;
+    };
+    for (int k = 0; k < 90; ++k) {
+      const auto a = k % 3 ? anywhere() : contact(), b = contact();
       if (a == b) continue;
+      if (!fd.is_free_at(a) && !(fd.last_crossing() && fd.pair_crosses_here(fd.last_crossing()->first, fd.last_crossing()->second)))
+        ++contained_starts;
       const Translation_segment s({to_nt<Exact_nt>(a), Exact_nt(1)}, {to_nt<Exact_nt>(b), Exact_nt(1)});
       std::vector<Segment_parameter> ed, ee, en;
       sd.free_ends(s, nullptr, 0, ed);
@@ -605,8 +626,10 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
       ends_found += ed.size();
     }
   }
-  INFO(free_contacts << " free contacts, " << inside << " inside, " << segments << " segments, " << ends_found << " ends");
+  INFO(free_contacts << " free contacts, " << inside << " inside, " << segments << " segments, " << ends_found << " ends, "
+                     << contained_starts << " segments from a point inside by containment");
   CHECK(free_contacts > 100);
+  CHECK(contained_starts > 20);
   CHECK(inside > 100);
   CHECK(ends_found > 50);
 }
