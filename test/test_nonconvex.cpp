@@ -591,17 +591,14 @@ TEST_CASE("on a small grid, double arithmetic decides the predicates as exact ar
     Segment_search sd(fd), se(fe);
     // A translation in the box of the sum (on a grid of 1/64): often inside by containment,
     // where no pair crosses (the segment search then knows its first element without a test).
-    std::array<double, 3> lo = {0, 0, 0}, hi = {0, 0, 0};
-    for (int c = 0; c < 3; ++c) {
-      auto coordinate = [c](const std::array<double, 3>& x) { return x[c]; };
-      auto range = [&](const Mesh_data& M) {
-        const auto [l, h] = std::minmax_element(M.points.begin(), M.points.end(),
-                                                [&](const auto& x, const auto& y) { return coordinate(x) < coordinate(y); });
-        return std::make_pair(coordinate(*l), coordinate(*h));
-      };
-      lo[c] = range(P).first + range(Q).first;
-      hi[c] = range(P).second + range(Q).second;
-    }
+    std::array<double, 3> lo = {0, 0, 0}, hi = {0, 0, 0}; // the sum of P's and Q's boxes (their components')
+    for (const Mesh_data* M : {&P, &Q})
+      for (int c = 0; c < 3; ++c) {
+        double l = M->components.front().min[c], h = M->components.front().max[c];
+        for (const auto& component : M->components) l = std::min(l, component.min[c]), h = std::max(h, component.max[c]);
+        lo[c] += l;
+        hi[c] += h;
+      }
     auto anywhere = [&] {
       std::array<double, 3> t;
       for (int c = 0; c < 3; ++c) t[c] = std::round(rng.get_double(lo[c], hi[c]) * 64) / 64;
