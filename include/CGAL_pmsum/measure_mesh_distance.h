@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -54,8 +55,7 @@ public:
         m_triangles.emplace_back(p(0), p(1), p(2));
       }
     if (m_triangles.empty()) return;
-    m_tree.rebuild(m_triangles.begin(), m_triangles.end());
-    m_tree.accelerate_distance_queries();
+    m_tree.rebuild(m_triangles.begin(), m_triangles.end()); // (its kd-tree for distances: at the first)
   }
   Shell_triangle_tree(const Shell_triangle_tree&) = delete;
   Shell_triangle_tree& operator=(const Shell_triangle_tree&) = delete;
@@ -66,6 +66,14 @@ public:
   /// The index (in the shells' order) of a triangle nearest to x. @pre !empty()
   std::size_t nearest(const K::Point_3& x) const
   { return std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin()); }
+  /// Calls f(i) with the index (in the shells' order) of each triangle that s meets. @pre !empty()
+  template <class F>
+  void for_each_met(const K::Segment_3& s, F&& f) const
+  {
+    std::vector<Triangles::const_iterator> met;
+    m_tree.all_intersected_primitives(s, std::back_inserter(met));
+    for (const auto it : met) f(std::size_t(it - m_triangles.cbegin()));
+  }
 
 private:
   using Triangles = std::vector<K::Triangle_3>;

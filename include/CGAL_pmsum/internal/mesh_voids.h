@@ -40,16 +40,23 @@ namespace CGAL {
 namespace Pmsum {
 namespace internal {
 
-/// Is the open segment from a to b outside the sum (Segment_search::free_ends(): one free
-/// part, from 0 to 1)? False if a = b.
-inline bool free_segment(Segment_search& search, const Position& a, const Position& b)
+/// The ends of the free parts of the segment from a to b (Segment_search::free_ends(),
+/// perturbed along the axes where it touches the boundary). @pre a != b
+inline std::vector<Segment_parameter> free_ends_between(Segment_search& search, const Position& a, const Position& b)
 {
-  if (a == b) return false;
   auto exact = [](const Position& x) {
     return Exact_point{{Exact_nt(x[0]), Exact_nt(x[1]), Exact_nt(x[2])}, Exact_nt(1)};
   };
   std::vector<Segment_parameter> ends;
   search.free_ends(Translation_segment(exact(a), exact(b)), nullptr, 0, ends);
+  return ends;
+}
+
+/// Is the open segment from a to b outside the sum (one free part, from 0 to 1)? False if a = b.
+inline bool free_segment(Segment_search& search, const Position& a, const Position& b)
+{
+  if (a == b) return false;
+  const std::vector<Segment_parameter> ends = free_ends_between(search, a, b);
   return ends.size() == 2 && CGAL::is_zero(ends[0].num) && compare(ends[1], Segment_parameter::one()) == CGAL::ZERO;
 }
 
