@@ -1126,6 +1126,108 @@ TEST_CASE("has_false_void: a void of the mesh that opens onto another shell thro
   }
 }
 
+TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or outside", "[applications][mesh]")
+{
+  // The cube of half-side 0.25 plus the slab [0, 2]^2 x [0, 0.4] and the block [0, 2]^2 x
+  // [-1.6, -0.6]: the slab S = [-0.25, 2.25]^2 x [-0.25, 0.65] over the block [-0.25, 2.25]^2 x
+  // [-1.85, -0.35], a free gap 0.1 high between them. The mesh: both boxes' boundaries (each
+  // face cut into 64 triangles), and triangles added over the middle of S's top face. Alone, for
+  // d = 1.2: the segments from S's top into S meet S's bottom (facing away) and the block's top
+  // (facing the same way, beyond the gap), those from the block's top out of it meet S's
+  // bottom and S's top (facing the same way, beyond S): no second sheet. A square inside S
+  // nearer than d to the top (facing up) or to the bottom (facing down) is one, or above S
+  // facing up (in free space over the top); not one farther than d, nor one above S facing
+  // down, nor a crevice: a wedge of two triangles sharing a side, the upper one facing down.
+  using namespace CGAL::Pmsum::internal;
+  Soup q = box({0, 0, 0}, {2, 2, 0.4});
+  q.append(box({0, 0, -1.6}, {2, 2, -0.6}));
+  const double c = 0.25;
+  const auto operands = cd_operands(box({-c, -c, -c}, {c, c, c}), q);
+  const Cd_geometry geometry(operands.first, operands.second);
+  Cd_filter filter(&geometry);
+  Segment_search search(filter);
+  Soup boundary = subdivided(box({-c, -c, -c}, {2 + c, 2 + c, 0.4 + c}), 3);
+  boundary.append(subdivided(box({-c, -c, -1.6 - c}, {2 + c, 2 + c, -0.6 + c}), 3));
+  auto square = [](double z, bool up) {
+    Soup s;
+    s.points = {{0.5, 0.5, z}, {1.5, 0.5, z}, {1.5, 1.5, z}, {0.5, 1.5, z}};
+    s.triangles = {{0, 1, 2}, {0, 2, 3}};
+    if (!up)
+      for (auto& t : s.triangles) std::swap(t[1], t[2]);
+    return s;
+  };
+  Soup crevice; // the side x = 1.5, z = 0.45; the upper triangle facing down, the lower one up
+  crevice.points = {{1.5, 0.5, 0.45}, {1.5, 1.5, 0.45}, {0.5, 1, 0.5}, {0.5, 1, 0.4}};
+  crevice.triangles = {{0, 2, 1}, {0, 1, 3}};
+  struct Case { const char* what; Soup added; double d; bool second_sheet; };
+  for (const Case& k : {Case{"nothing", Soup(), 1.2, false}, Case{"a square facing up", square(0.45, true), 0.5, true},
+                        Case{"a square facing down, 0.7 from the bottom", square(0.45, false), 0.5, false},
+                        Case{"a square facing down", square(0.45, false), 1.2, true},
+                        Case{"a square facing up, 0.2 from the top", square(0.45, true), 0.15, false},
+                        Case{"a square above S facing up", square(0.8, true), 1.2, true},
+                        Case{"a square above S facing down", square(0.8, false), 1.2, false},
+                        Case{"a crevice", crevice, 1.2, false}}) {
+    INFO(k.what);
+    Soup mesh = boundary;
+    mesh.append(k.added);
+    CHECK(has_second_sheet(to_mesh<Mesh>(mesh), k.d, search) == k.second_sheet);
+  }
+}
+
+TEST_CASE("mesh of a grate with its axes permuted: no second sheet, the sum's Euler characteristic", "[applications][mesh]")
+{
+  // grate-a (8 bars, 9 holes) with (x, y, z) -> (-0.75 z, x, 1.5 y), plus a cube of side 0.3,
+  // d = 2% of the sum's diagonal: the advancing front meshed the faces beside a convex edge
+  // and, over them, a second sheet of chords, a handle too many (Euler characteristic -18),
+  // until has_second_sheet() refused it. The sum is a union of boxes (each bar plus the cube),
+  // so its boundary's Euler characteristic is twice the union's, which the boxes' nerve gives:
+  // the sum over the sets of boxes that meet of (-1)^(size + 1).
+  const Soup bars = grate(4, 4, 1, 0.5, 0.25); // (grate-a)
+  auto turn = [](const Point& p) { return Point{-0.75 * p[2], p[0], 1.5 * p[1]}; };
+  Soup p;
+  for (const Point& x : bars.points) p.points.push_back(turn(x));
+  for (auto t : bars.triangles) p.triangles.push_back({t[2], t[1], t[0]}); // (the map turns the orientation)
+  const double side = 0.3;
+  std::vector<Box> sum;
+  for (const Box& b : bars.boxes) {
+    const Point lo = turn(b.min), hi = turn(b.max);
+    sum.push_back({{hi[0], lo[1], lo[2]}, {lo[0] + side, hi[1] + side, hi[2] + side}});
+  }
+  long chi = 0;
+  for (unsigned set = 1; set < (1u << sum.size()); ++set) {
+    Box meet{{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, {HUGE_VAL, HUGE_VAL, HUGE_VAL}};
+    int size = 0;
+    for (std::size_t i = 0; i < sum.size(); ++i)
+      if (set >> i & 1) {
+        ++size;
+        for (int a = 0; a < 3; ++a) {
+          meet.min[a] = (std::max)(meet.min[a], sum[i].min[a]);
+          meet.max[a] = (std::min)(meet.max[a], sum[i].max[a]);
+        }
+      }
+    if (meet.min[0] <= meet.max[0] && meet.min[1] <= meet.max[1] && meet.min[2] <= meet.max[2])
+      chi += size % 2 == 1 ? 1 : -1;
+  }
+  REQUIRE(2 * chi == -16); // (9 holes: genus 9)
+  const Mesh P = to_mesh<Mesh>(p), Q = to_mesh<Mesh>(box({0, 0, 0}, {side, side, side}));
+  double diagonal = 0;
+  for (int a = 0; a < 3; ++a) {
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const Box& b : sum) {
+      lo = (std::min)(lo, b.min[a]);
+      hi = (std::max)(hi, b.max[a]);
+    }
+    diagonal += (hi - lo) * (hi - lo);
+  }
+  Mesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  REQUIRE_NOTHROW(CGAL::point_minkowski_sum_mesh(P, Q, 0.02 * std::sqrt(diagonal), m, CGAL::parameters::mesh_statistics(ms)));
+  const auto checks = CGAL::Pmsum::check_mesh(m);
+  REQUIRE(checks.valid());
+  CHECK(checks.shells == 1);
+  CHECK(checks.euler_characteristic == 2 * chi);
+}
+
 TEST_CASE("mesh of a thin part: the advancing front, or plane by plane", "[applications][mesh]")
 {
   const Mesh Q = to_mesh<Mesh>(box({0, 0, 0}, {0.02, 0.02, 0.02}));

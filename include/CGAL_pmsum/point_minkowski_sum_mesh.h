@@ -28,6 +28,7 @@
 #define CGAL_PMSUM_POINT_MINKOWSKI_SUM_MESH_H
 
 #include <CGAL_pmsum/check_mesh.h>
+#include <CGAL_pmsum/internal/mesh_second_sheet.h>
 #include <CGAL_pmsum/internal/mesh_left_out_points.h>
 #include <CGAL_pmsum/internal/mesh_reconstruction.h>
 #include <CGAL_pmsum/internal/mesh_voids.h>
@@ -160,7 +161,7 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), no void the sum does not have
-/// (has_false_void()), the points' distance to the mesh and the
+/// (has_false_void()), no second sheet (has_second_sheet()), the points' distance to the mesh and the
 /// mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
 /// with the trim curves searched wherever they are (not only where the covering needs them),
 /// then d is halved, twice at most, at d/2 first with the points on sharp creases kept, then
@@ -251,7 +252,6 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // Plane by plane, the holes left are closed by fill_holes(): never over empty space.
       const bool across = cd && ms.checks.valid() &&
                           (!no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover));
-      ms.seconds_mesh += seconds_since(t_way);
       ms.covering_distance = dl;
       ms.refinements = level.halvings;
       ms.crease_points = creases;
@@ -260,13 +260,19 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                          splits_a_part(mesh, positions, part);
       const bool passed = ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
                           ms.mesh_to_boundary_bound < dl && !across;
-      // Last (it searches segments): a void that the sum does not have (mesh_voids.h).
-      const bool false_void = passed && ms.checks.void_shells > 0 && geometry && [&] {
+      // Last (they search segments): a void that the sum does not have (mesh_voids.h), two
+      // sheets over one part of the boundary (mesh_second_sheet.h).
+      const char* refuted = nullptr;
+      if (passed && geometry) {
         Cd_filter filter(geometry);
         Segment_search search(filter);
-        return has_false_void(mesh, search);
-      }();
-      if (passed && !false_void) {
+        if (ms.checks.void_shells > 0 && has_false_void(mesh, search))
+          refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
+        else if (has_second_sheet(mesh, dl, search))
+          refuted = "laid two sheets over one part of the boundary (a pocket inside the solid between them: a handle the sum may not have)";
+      }
+      ms.seconds_mesh += seconds_since(t_way); // (the checks included)
+      if (passed && !refuted) {
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
         ms.by_planes = way == 1;
@@ -278,9 +284,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                    : level.again                            ? " without them"
                                                             : "") +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
-                  (across       ? "closed a hole over empty space"
-                   : false_void ? "made a void that the sum does not have (a passage narrower than that d closed)"
-                                : level_failure(ms, split));
+                  (across ? "closed a hole over empty space" : refuted ? refuted : level_failure(ms, split));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
   }
@@ -301,7 +305,10 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// its container counting as one solid: the output points of such a part all lie on one
 /// outer shell and its voids), none of its voids opens onto another shell through free space
 /// (an exact segment test from the void's vertices nearest to another shell: a passage
-/// narrower than `d` that the reconstruction closed), every output point
+/// narrower than `d` that the reconstruction closed), no triangle lies inside the sum under a
+/// vertex, facing its way, as a second sheet over that part of the boundary (an exact segment
+/// test along the vertex's normal: a pocket between two sheets, a handle the sum may not
+/// have), every output point
 /// of the sum lies closer than `d'` to it and every point of it closer than `d'` to an output
 /// point (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
