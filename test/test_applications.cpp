@@ -1128,10 +1128,12 @@ TEST_CASE("has_false_void: a void of the mesh that opens onto another shell thro
 
 TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or outside", "[applications][mesh]")
 {
-  // The cube of half-side 0.25 plus the slab [0, 2]^2 x [0, 0.4] and the block [0, 2]^2 x
-  // [-1.6, -0.6]: the slab S = [-0.25, 2.25]^2 x [-0.25, 0.65] over the block [-0.25, 2.25]^2 x
-  // [-1.85, -0.35], a free gap 0.1 high between them. The mesh: both boxes' boundaries (each
-  // face cut into 64 triangles), and triangles added over the middle of S's top face. Alone, for
+  // The cube of half-side 0.25 plus the slab [0, 2]^2 x [0, 0.4] and the block [0.1, 2.1] x
+  // [0.05, 2.05] x [-1.6, -0.6]: the slab S = [-0.25, 2.25]^2 x [-0.25, 0.65] over the block
+  // [-0.15, 2.35] x [-0.2, 2.3] x [-1.85, -0.35], a free gap 0.1 high between them (the block
+  // shifted off S's grid, so that segments from S cross its triangles inside, not along their
+  // sides). The mesh: both boxes' boundaries (each face cut into 128 triangles), and triangles
+  // added over the middle of S's top face. Alone, for
   // d = 1.2: the segments from S's top into S meet S's bottom (facing away) and the block's top
   // (facing the same way, beyond the gap), those from the block's top out of it meet S's
   // bottom and S's top (facing the same way, beyond S): no second sheet. A square inside S
@@ -1140,14 +1142,14 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
   // down, nor a crevice: a wedge of two triangles sharing a side, the upper one facing down.
   using namespace CGAL::Pmsum::internal;
   Soup q = box({0, 0, 0}, {2, 2, 0.4});
-  q.append(box({0, 0, -1.6}, {2, 2, -0.6}));
+  q.append(box({0.1, 0.05, -1.6}, {2.1, 2.05, -0.6}));
   const double c = 0.25;
   const auto operands = cd_operands(box({-c, -c, -c}, {c, c, c}), q);
   const Cd_geometry geometry(operands.first, operands.second);
   Cd_filter filter(&geometry);
   Segment_search search(filter);
   Soup boundary = subdivided(box({-c, -c, -c}, {2 + c, 2 + c, 0.4 + c}), 3);
-  boundary.append(subdivided(box({-c, -c, -1.6 - c}, {2 + c, 2 + c, -0.6 + c}), 3));
+  boundary.append(subdivided(box({0.1 - c, 0.05 - c, -1.6 - c}, {2.1 + c, 2.05 + c, -0.6 + c}), 3));
   auto square = [](double z, bool up) {
     Soup s;
     s.points = {{0.5, 0.5, z}, {1.5, 0.5, z}, {1.5, 1.5, z}, {0.5, 1.5, z}};

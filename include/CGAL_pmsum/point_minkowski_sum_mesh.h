@@ -269,7 +269,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         if (ms.checks.void_shells > 0 && has_false_void(mesh, search))
           refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
         else if (has_second_sheet(mesh, dl, search))
-          refuted = "laid two sheets over one part of the boundary (a pocket inside the solid between them: a handle the sum may not have)";
+          refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
       }
       ms.seconds_mesh += seconds_since(t_way); // (the checks included)
       if (passed && !refuted) {
@@ -306,9 +306,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// outer shell and its voids), none of its voids opens onto another shell through free space
 /// (an exact segment test from the void's vertices nearest to another shell: a passage
 /// narrower than `d` that the reconstruction closed), no triangle lies inside the sum under a
-/// vertex, facing its way, as a second sheet over that part of the boundary (an exact segment
-/// test along the vertex's normal: a pocket between two sheets, a handle the sum may not
-/// have), every output point
+/// vertex, or outside it over the vertex, facing its way, as a second sheet over that part of
+/// the boundary (exact segment tests along the vertex's normal: a pocket between two sheets,
+/// a handle the sum may not have), every output point
 /// of the sum lies closer than `d'` to it and every point of it closer than `d'` to an output
 /// point (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the

@@ -31,8 +31,9 @@
 // boundary at v: it faces out as the boundary there does, on the same side of the boundary
 // as the segment; the segment has crossed a triangle facing against u before it, and the
 // space between the two is a pocket on the wrong side of the mesh (its outside inside the
-// solid, or its inside in free space). Unless that triangle and T share a side: the pocket is
-// then a crevice closed along that side, a fold of one sheet (rotated hooks at 3%: a sliver
+// solid, or its inside in free space). Unless T shares a side with a triangle facing against
+// u that the segment met before it: the pocket is then a crevice closed along that side, a
+// fold of one sheet (rotated hooks at 3%: a sliver
 // wedge 0.86-0.98 d under a concave crease, in a mesh of the exact Euler characteristic), not
 // a second sheet. Where the mesh has one sheet over each part of the boundary, the triangles
 // such segments meet face against u (the other side of a part, or of a passage, thinner than
@@ -70,10 +71,12 @@ namespace internal {
 
 /// Does `mesh` (closed, its vertices on the boundary of the sum) have two sheets over one part
 /// of the boundary: does a segment of length `d` from a vertex v along its normal, into the
-/// mesh or out of it, meet a triangle that has no corner in v's star, faces v's way and shares
-/// no side with the triangle met before it, at a point q with the segment from v to q wholly
-/// inside the sum (into the mesh) or outside it (out of it) (see the file comment)?
-/// `search`: on the CD filter of the sum.
+/// mesh or out of it, meet inside a triangle that has no corner in v's star, faces v's way and
+/// shares no side with a triangle facing against it met before, at a point q with the segment
+/// from v to q wholly inside the sum (into the mesh) or outside it (out of it) (see the file
+/// comment)? `search`: on the CD filter of the sum.
+/// @pre no triangle of `mesh` is degenerate in doubles (check_mesh() counts one as a
+///      self-intersection: the meshes checked here passed it)
 template <class TriangleMesh>
 bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search)
 {
@@ -122,6 +125,7 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
     if (std::any_of(at.begin() + start[v], at.begin() + start[v + 1], [&](std::size_t f) { return !(dot(normal[f], u) > 0); }))
       continue; // v on a fold of its own sheet
     const V& p = s.points[v];
+    if (p + scaled(u, d) == p) continue; // (d below the spacing of doubles there)
     star.clear();
     for (std::size_t k = start[v]; k < start[v + 1]; ++k)
       star.insert(star.end(), s.triangles[at[k]].begin(), s.triangles[at[k]].end());
@@ -140,7 +144,10 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
             std::any_of(t.begin(), t.end(), [&](std::size_t c) { return std::count(star.begin(), star.end(), c) > 0; }) ||
             !crosses_inside(p, end, t))
           continue;
-        if (k > 0 && shares_a_side(met[k - 1].second, f)) continue; // a crevice, folded along that side
+        if (std::any_of(met.begin(), met.begin() + k, [&](const auto& e) { // a crevice, folded along that side
+              return dot(normal[e.second], u) < 0 && shares_a_side(e.second, f);
+            }))
+          continue;
         const V q = p + scaled(w, h);
         (side < 0 ? under : over).emplace_back(p + scaled(q - p, std::ldexp(1., -20)), q);
       }
