@@ -138,7 +138,8 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
       });
       std::sort(met.begin(), met.end());
       for (std::size_t k = 0; k < met.size(); ++k) {
-        const auto& [h, f] = met[k];
+        const double h = met[k].first;
+        const std::size_t f = met[k].second;
         const auto& t = s.triangles[f];
         if (!(dot(normal[f], u) > 0) || !(h > 0) ||
             std::any_of(t.begin(), t.end(), [&](std::size_t c) { return std::count(star.begin(), star.end(), c) > 0; }) ||
