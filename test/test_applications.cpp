@@ -11,6 +11,8 @@
 #include <boost/property_map/function_property_map.hpp>
 
 #include <functional>
+#include <memory>
+#include <sstream>
 
 #include <catch2/catch.hpp>
 
@@ -699,6 +701,54 @@ TEST_CASE("mesh of a sum: the same mesh with one thread or two, run after run", 
     INFO("run " << run << ": " << got.size() << " triangles, " << expected.size() << " with one thread");
     const bool same = got == expected;
     CHECK(same);
+  }
+}
+
+TEST_CASE("fill_holes: the same triangles whatever the heap addresses", "[applications][mesh]")
+{
+  // A hole of 14 nearly coplanar points (on a flat part of a contact space: flat cross - cross,
+  // both rotated), each border point with the third corner of the triangle beyond the border
+  // edge that ends there. CGAL 5.5's triangulate_hole restricted to a Delaunay triangulation
+  // filled it two ways, depending on what had been allocated before (the order of its cells).
+  const std::array<std::array<double, 3>, 2> ring[] = {
+      {{{{0x1.fcc0e9d72065bp-3, -0x1.4e5dbe0c2b072p-3, -0x1.374d090e14581p-3}}, {{0x1.f8835cc72d4fep-3, -0x1.5363407e1bf97p-3, -0x1.45f1f56233ff1p-3}}}},
+      {{{{0x1.0cf3633694bdp-2, -0x1.46c3aace19a2bp-3, -0x1.25ef749122ec5p-3}}, {{0x1.00d27301b9d27p-2, -0x1.51f951fc0761bp-3, -0x1.437fe7991dff8p-3}}}},
+      {{{{0x1.1d414943b4d34p-2, -0x1.41b7237bdc0c8p-3, -0x1.1d33b1e6c98e9p-3}}, {{0x1.13a1b95d69cfdp-2, -0x1.509f10fa66b0dp-3, -0x1.4743c1f3bf41ap-3}}}},
+      {{{{0x1.2d8f2f50d4e99p-2, -0x1.3caa9c299e765p-3, -0x1.1477ef3c7030cp-3}}, {{0x1.23ef9f6a89e61p-2, -0x1.4b9289a8291aap-3, -0x1.3e87ff4965e3ep-3}}}},
+      {{{{0x1.3ddd155df4ffcp-2, -0x1.379e14d760e02p-3, -0x1.0bbc2c9216d3p-3}}, {{0x1.343d8577a9fc5p-2, -0x1.46860255eb847p-3, -0x1.35cc3c9f0c861p-3}}}},
+      {{{{0x1.4e2afb6b15161p-2, -0x1.32918d852349fp-3, -0x1.030069e7bd753p-3}}, {{0x1.448b6b84ca129p-2, -0x1.41797b03adee4p-3, -0x1.2d1079f4b3285p-3}}}},
+      {{{{0x1.57ca8b5160199p-2, -0x1.23a9a00698a58p-3, -0x1.b1e0b3b58f845p-4}}, {{0x1.5e78e178352c6p-2, -0x1.2d850632e5b3cp-3, -0x1.f4894e7ac82edp-4}}}},
+      {{{{0x1.5bfa8f5250c77p-2, -0x1.1a0a9654b5833p-3, -0x1.732d46e4fae79p-4}}, {{0x1.539fcf1ba2dp-2, -0x1.1d83c898b1b8p-3, -0x1.884d866acac88p-4}}}},
+      {{{{0x1.539fcf1ba2dp-2, -0x1.1d83c898b1b8p-3, -0x1.884d866acac88p-4}}, {{0x1.57ca8b5160199p-2, -0x1.23a9a00698a58p-3, -0x1.b1e0b3b58f845p-4}}}},
+      {{{{0x1.456a9568f50b2p-2, -0x1.25a81c2bf09a8p-3, -0x1.aeaf9db30519cp-4}}, {{0x1.4f25f525c93b3p-2, -0x1.340340efb2adcp-3, -0x1.aa4c12ec58f4fp-4}}}},
+      {{{{0x1.37622a5d16fd9p-2, -0x1.2db2c271be7acp-3, -0x1.d498a89df00e5p-4}}, {{0x1.3e40ea7110e69p-2, -0x1.2f552b9200c99p-3, -0x1.c828846d0399fp-4}}}},
+      {{{{0x1.1c4e02e2a2f07p-2, -0x1.43743b77df96ep-3, -0x1.124d6f2a9b7aap-3}}, {{0x1.316c5044895a5p-2, -0x1.494dd62cfdf41p-3, -0x1.ff47507461a71p-4}}}},
+      {{{{0x1.13b2ab6349797p-2, -0x1.5e986b6a493a6p-3, -0x1.2a2146fe352cap-3}}, {{0x1.2497b61801ce2p-2, -0x1.634680c7fb1e8p-3, -0x1.1b330e3ddfda2p-3}}}},
+      {{{{0x1.02cda0ae9124cp-2, -0x1.59ea560c97563p-3, -0x1.390f7fbe8a7f3p-3}}, {{0x1.06de1136c1ed4p-2, -0x1.789116054664fp-3, -0x1.45b0ad01e4335p-3}}}}};
+  std::string first;
+  for (int run = 0; run < 100; ++run) {
+    std::vector<std::unique_ptr<char[]>> noise; // the heap left differently for every run
+    for (int k = 0; k < (run * 37) % 200; ++k) noise.emplace_back(new char[std::size_t(16 + (k * 97) % 4000)]);
+    noise.clear();
+    Mesh m;
+    std::vector<Mesh::Vertex_index> border, beyond;
+    for (const auto& r : ring) {
+      border.push_back(m.add_vertex(IK::Point_3(r[0][0], r[0][1], r[0][2])));
+      beyond.push_back(m.add_vertex(IK::Point_3(r[1][0], r[1][1], r[1][2])));
+    }
+    const std::size_t n = border.size();
+    for (std::size_t i = 0; i < n; ++i) REQUIRE(m.add_face(border[i], border[(i + n - 1) % n], beyond[i]) != Mesh::null_face());
+    std::vector<Mesh::Face_index> added;
+    CGAL::Pmsum::internal::fill_holes(m, 1.0, std::back_inserter(added));
+    REQUIRE(added.size() >= n - 2); // (the ring's outer side, 2n edges, is a hole too)
+    std::ostringstream triangles;
+    for (Mesh::Face_index f : added) {
+      for (Mesh::Vertex_index v : m.vertices_around_face(m.halfedge(f))) triangles << std::size_t(v) << ' ';
+      triangles << "| ";
+    }
+    if (run == 0) first = triangles.str();
+    INFO("run " << run << ": " << triangles.str() << "; run 0: " << first);
+    CHECK(triangles.str() == first);
   }
 }
 

@@ -158,8 +158,13 @@ void on_own_thread(const F& f)
 
 /// Closes the holes the reconstruction leaves (at sharp corners and along the rims of thin
 /// parts) with triangles between the points of each hole's border (CGAL's triangulate_hole:
-/// no new vertex). A hole is left open if its border has more than 300 edges, or if a triangle
-/// of its filling has an edge longer than `longest_edge` (3 d: it would cut across the shape).
+/// no new vertex), searched over every triangulation of the hole first, then, if none is found
+/// or it has an edge longer than `longest_edge` (3 d: it would cut across the shape), over the
+/// triangles of the border points' Delaunay triangulation. (CGAL 5.5's search restricted to
+/// the Delaunay triangulation compares weights that depend on the order in which it visits
+/// that triangulation's cells, and so on their heap addresses: the same hole was filled in two
+/// ways, depending on what a parallel stage had allocated before.) A hole is left open if its
+/// border has more than 300 edges, or if neither filling is made without such a long edge.
 /// Whether the result is valid is for check_mesh() to say. The triangles added and kept go to
 /// `added_out`.
 template <class TriangleMesh, class OutputIterator>
@@ -179,16 +184,19 @@ void fill_holes(TriangleMesh& mesh, double longest_edge, OutputIterator added_ou
     std::size_t size = 0;
     for (halfedge_descriptor b : CGAL::halfedges_around_face(h, mesh)) size += (void(b), 1);
     if (size > 300) continue;
-    std::vector<face_descriptor> added;
-    PMP::triangulate_hole(mesh, h, std::back_inserter(added));
-    bool cuts = false; // (the hole's own border edges may be long: faces of the plane-wise way)
-    const std::set<face_descriptor> filling(added.begin(), added.end());
-    for (face_descriptor f : added)
-      for (halfedge_descriptor e : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-        cuts = cuts || (filling.count(face(opposite(e, mesh), mesh)) && too_long(e));
-    for (face_descriptor f : added)
-      if (cuts) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
-      else *added_out++ = f;
+    for (const bool delaunay : {false, true}) { // (a filling removed leaves h on the hole's border)
+      std::vector<face_descriptor> added;
+      PMP::triangulate_hole(mesh, h, std::back_inserter(added), CGAL::parameters::use_delaunay_triangulation(delaunay));
+      bool cuts = false; // (the hole's own border edges may be long: faces of the plane-wise way)
+      const std::set<face_descriptor> filling(added.begin(), added.end());
+      for (face_descriptor f : added)
+        for (halfedge_descriptor e : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+          cuts = cuts || (filling.count(face(opposite(e, mesh), mesh)) && too_long(e));
+      for (face_descriptor f : added)
+        if (cuts) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+        else *added_out++ = f;
+      if (!cuts && !added.empty()) break;
+    }
   }
 }
 
