@@ -161,10 +161,11 @@ void on_own_thread(const F& f)
 /// no new vertex), searched over every triangulation of the hole first, then, if none is found
 /// or it has an edge longer than `longest_edge` (3 d: it would cut across the shape), over the
 /// triangles of the border points' Delaunay triangulation. (CGAL 5.5's search restricted to
-/// the Delaunay triangulation compares weights that depend on the order in which it visits
-/// that triangulation's cells, and so on their heap addresses: the same hole was filled in two
-/// ways, depending on what a parallel stage had allocated before.) A hole is left open if its
-/// border has more than 300 edges, or if neither filling is made without such a long edge.
+/// the Delaunay triangulation is not deterministic: it filled one hole in two ways, depending
+/// on where earlier allocations had left its triangulation's cells; its weights seem to depend
+/// on the order in which it visits them. The cubic search always gives the same filling.)
+/// A hole is left open if its border has more than 300 edges, or if neither filling is made
+/// without such a long edge.
 /// Whether the result is valid is for check_mesh() to say. The triangles added and kept go to
 /// `added_out`.
 template <class TriangleMesh, class OutputIterator>
