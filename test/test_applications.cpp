@@ -1226,6 +1226,45 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
   }
 }
 
+TEST_CASE("has_false_short_handle: a tunnel of the mesh narrower than d, the sum's or not", "[applications][mesh]")
+{
+  // The block [0, 4]^3 with the tunnel [1.5, 2.5]^2 along z (tunnel_block()) plus the cube of
+  // half-side c: for c = 0.45 the tunnel [1.95, 2.05]^2, 0.1 wide, through the box [-c, 4 + c]^3;
+  // for c = 0.55 it is closed. The mesh: that box with that tunnel (0.4 round, a handle shorter
+  // than d = 1.6), or the box alone.
+  using namespace CGAL::Pmsum::internal;
+  const double lo = -0.45, hi = 4.45, in_lo = 1.95, in_hi = 2.05;
+  Soup frame;
+  for (double z : {lo, hi})
+    for (const auto& [a, b] : {std::pair{lo, hi}, std::pair{in_lo, in_hi}})
+      for (const auto& [x, y] : {std::pair{a, a}, std::pair{b, a}, std::pair{b, b}, std::pair{a, b}}) frame.points.push_back({x, y, z});
+  auto outer = [](int k, int z) { return std::size_t(8 * z + k % 4); };
+  auto inner = [](int k, int z) { return std::size_t(8 * z + 4 + k % 4); };
+  auto quad = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+    frame.triangles.push_back({a, b, c});
+    frame.triangles.push_back({a, c, d});
+  };
+  for (int k = 0; k < 4; ++k) {
+    quad(outer(k, 1), outer(k + 1, 1), inner(k + 1, 1), inner(k, 1)); // top, facing up
+    quad(outer(k + 1, 0), outer(k, 0), inner(k, 0), inner(k + 1, 0)); // bottom
+    quad(outer(k, 0), outer(k + 1, 0), outer(k + 1, 1), outer(k, 1)); // sides, facing out
+    quad(inner(k + 1, 0), inner(k, 0), inner(k, 1), inner(k + 1, 1)); // the tunnel's, facing into it
+  }
+  const Mesh tunnel = to_mesh<Mesh>(subdivided(frame, 3)), solid = to_mesh<Mesh>(subdivided(box({lo, lo, lo}, {hi, hi, hi}), 3));
+  REQUIRE(CGAL::Pmsum::check_mesh(tunnel).valid());
+  REQUIRE(CGAL::Pmsum::check_mesh(tunnel).euler_characteristic == 0);
+  struct Case { const char* what; double c; const Mesh& mesh; bool false_handle; };
+  for (const Case& k : {Case{"the tunnel, the sum's", 0.45, tunnel, false}, Case{"the tunnel, closed in the sum", 0.55, tunnel, true},
+                        Case{"no tunnel", 0.45, solid, false}}) {
+    INFO(k.what);
+    const auto operands = cd_operands(box({-k.c, -k.c, -k.c}, {k.c, k.c, k.c}), pmsum_shapes::tunnel_block());
+    const Cd_geometry geometry(operands.first, operands.second);
+    Cd_filter filter(&geometry);
+    Segment_search search(filter);
+    CHECK(has_false_short_handle(k.mesh, 1.6, search) == k.false_handle);
+  }
+}
+
 TEST_CASE("mesh of a grate with its axes permuted: no second sheet, the sum's Euler characteristic", "[applications][mesh]")
 {
   // grate-a (8 bars, 9 holes) with (x, y, z) -> (-0.75 z, x, 1.5 y), plus a cube of side 0.3,

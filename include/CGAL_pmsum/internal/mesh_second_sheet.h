@@ -45,7 +45,8 @@
 // axis-permuted shapes and demo models at 1.3-3%; benchmark/mesh/hard/README.md) it found
 // three meshes with too many handles (the grate above: 2 segments inside, at its extra handle;
 // grate-a plus a rotated cube, and the permuted grate plus a rotated tetrahedron), missed one (thin tubes at the
-// holes' concave corners, whose triangles touch the crease vertices' stars), and refused one
+// holes' concave corners, whose triangles touch the crease vertices' stars: mesh_short_handles.h
+// finds it), and refused one
 // right mesh (a bump near a corner; the next level was accepted). The normals and the meeting
 // points are computed in doubles and only choose which segments are searched; the exact
 // segment search decides. A mesh with a second sheet is refused like one that fails a check.
@@ -69,6 +70,33 @@ namespace CGAL {
 namespace Pmsum {
 namespace internal {
 
+/// The triangles at each vertex of a shell, with their normals and the vertices'.
+struct Vertex_stars
+{
+  using V = std::array<double, 3>;
+  std::vector<V> normal;              // of each triangle (length: twice its area)
+  std::vector<V> vertex_normal;       // of each vertex: the sum of its triangles'
+  std::vector<std::size_t> start, at; // the triangles at vertex v: at[start[v]] .. at[start[v + 1] - 1]
+
+  explicit Vertex_stars(const Shell& s)
+    : normal(s.triangles.size()), vertex_normal(s.points.size(), V{0, 0, 0}), start(s.points.size() + 1, 0),
+      at(3 * s.triangles.size())
+  {
+    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+      const auto& t = s.triangles[f];
+      normal[f] = triangle_normal<double>(s.points[t[0]], s.points[t[1]], s.points[t[2]]);
+      for (std::size_t v : t) {
+        vertex_normal[v] = vertex_normal[v] + normal[f];
+        ++start[v + 1];
+      }
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::size_t> filled(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < s.triangles.size(); ++f)
+      for (std::size_t v : s.triangles[f]) at[filled[v]++] = f;
+  }
+};
+
 /// Does `mesh` (closed, its vertices on the boundary of the sum) have two sheets over one part
 /// of the boundary: does a segment of length `d` from a vertex v along its normal, into the
 /// mesh or out of it, meet inside a triangle that has no corner in v's star, faces v's way and
@@ -84,21 +112,11 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
   const std::vector<Shell> shells = {to_shell(mesh)};
   const Shell& s = shells.front();
   if (s.triangles.empty()) return false;
-  // Each triangle's normal (length: twice its area), each vertex's (their sum), and the triangles at each vertex.
-  std::vector<V> normal(s.triangles.size()), vertex_normal(s.points.size(), V{0, 0, 0});
-  std::vector<std::size_t> start(s.points.size() + 1, 0), at(3 * s.triangles.size());
-  for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-    const auto& t = s.triangles[f];
-    normal[f] = triangle_normal<double>(s.points[t[0]], s.points[t[1]], s.points[t[2]]);
-    for (std::size_t v : t) {
-      vertex_normal[v] = vertex_normal[v] + normal[f];
-      ++start[v + 1];
-    }
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::size_t> filled(start.begin(), start.end() - 1);
-  for (std::size_t f = 0; f < s.triangles.size(); ++f)
-    for (std::size_t v : s.triangles[f]) at[filled[v]++] = f;
+  const Vertex_stars stars(s);
+  const auto& normal = stars.normal; // (references, not a structured binding: lambdas capture them)
+  const auto& vertex_normal = stars.vertex_normal;
+  const auto& start = stars.start;
+  const auto& at = stars.at;
   // The segments v -> q to search (those the doubles choose), into the mesh and out of it.
   using K = Shell_triangle_tree::K;
   const Shell_triangle_tree tree(shells);
