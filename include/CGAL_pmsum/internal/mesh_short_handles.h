@@ -248,7 +248,7 @@ inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::v
     const V n = unit(stars.vertex_normal[i]), a = cross(n0, n);
     if (dot(a, a) > dot(across, across)) across = a;
   }
-  if (!(dot(across, across) > 0.25)) return false; // (normals within 30 degrees of each other: no tube)
+  if (!(dot(across, across) > 0.25)) return false; // (every normal within 30 degrees of the first: no tube)
   const V axis = unit(across);
   V c{0, 0, 0};
   for (std::size_t i : cycle) c = c + s.points[i];
