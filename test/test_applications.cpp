@@ -1222,7 +1222,9 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
     INFO(k.what);
     Soup mesh = boundary;
     mesh.append(k.added);
-    CHECK(has_second_sheet(to_mesh<Mesh>(mesh), k.d, search) == k.second_sheet);
+    const Mesh m = to_mesh<Mesh>(mesh);
+    CHECK(has_second_sheet(m, k.d, search, false) == k.second_sheet);
+    CHECK(has_second_sheet(m, k.d, search, true) == k.second_sheet); // (chosen on TBB's threads)
   }
 }
 

@@ -66,18 +66,40 @@ public:
   /// The index (in the shells' order) of a triangle nearest to x. @pre !empty()
   std::size_t nearest(const K::Point_3& x) const
   { return std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin()); }
-  /// Calls f(i) with the index (in the shells' order) of each triangle that s meets. @pre !empty()
-  template <class F>
-  void for_each_met(const K::Segment_3& s, F&& f) const
+  /// Calls f(i) with the index (in the shells' order) of each triangle that s meets, except
+  /// those for which skip(i) is true: they are not tested (a triangle known to touch s only at
+  /// its source, whose exact test would be degenerate). @pre !empty()
+  template <class F, class Skip>
+  void for_each_met(const K::Segment_3& s, F&& f, const Skip& skip) const
   {
-    std::vector<Triangles::const_iterator> met;
-    m_tree.all_intersected_primitives(s, std::back_inserter(met));
-    for (const auto it : met) f(std::size_t(it - m_triangles.cbegin()));
+    Met_traversal<F, Skip> traversal{m_tree.traits(), m_triangles.cbegin(), f, skip};
+    m_tree.traversal(s, traversal);
   }
 
 private:
   using Triangles = std::vector<K::Triangle_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+  using Traits = CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>;
+  using Tree = CGAL::AABB_tree<Traits>;
+
+  // The traversal of for_each_met(): AABB_tree's listing of the primitives a query meets,
+  // with the skipped ones left out before their test.
+  template <class F, class Skip>
+  struct Met_traversal
+  {
+    const Traits& traits;
+    Triangles::const_iterator first;
+    F& f;
+    const Skip& skip;
+    bool go_further() const { return true; }
+    void intersection(const K::Segment_3& s, const Traits::Primitive& t)
+    {
+      const std::size_t i = std::size_t(t.id() - first);
+      if (!skip(i) && traits.do_intersect_object()(s, t)) f(i);
+    }
+    bool do_intersect(const K::Segment_3& s, const CGAL::AABB_node<Traits>& node) const
+    { return traits.do_intersect_object()(s, node.bbox()); }
+  };
+
   Triangles m_triangles;
   Tree m_tree;
 };

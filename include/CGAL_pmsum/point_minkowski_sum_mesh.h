@@ -270,7 +270,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         Segment_search search(filter);
         if (ms.checks.void_shells > 0 && has_false_void(mesh, search))
           refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
-        else if (has_second_sheet(mesh, dl, search))
+        else if (has_second_sheet(mesh, dl, search, pipeline.parallel))
           refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
         else if (has_false_short_handle(mesh, dl, search))
           refuted = "made a handle narrower than that d that the sum is not shown to have";
