@@ -48,7 +48,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <unordered_map>
 #include <utility>
@@ -65,32 +64,21 @@ class Edge_balls
 public:
   using V = std::array<double, 3>;
 
-  Edge_balls(const Shell& s, const Vertex_stars& stars) : m_s(s), m_stars(stars)
+  Edge_balls(const Shell& s, const Vertex_stars& stars)
+    : m_s(s), m_stars(stars), m_across(3 * s.triangles.size(), s.triangles.size()),
+      m_distance(s.points.size(), std::numeric_limits<double>::infinity()), m_counted(s.points.size(), false),
+      m_state(s.triangles.size() + 1, Out) // (the last: no triangle)
   {
-    const std::size_t n = s.points.size(), m = s.triangles.size();
-    m_neighbours.resize(n);
-    for (std::size_t v = 0; v < n; ++v) {
-      for_each_triangle_at(v, [&](std::size_t f) {
-        for (std::size_t c : s.triangles[f])
-          if (c != v) m_neighbours[v].push_back(c);
-      });
-      std::sort(m_neighbours[v].begin(), m_neighbours[v].end());
-      m_neighbours[v].erase(std::unique(m_neighbours[v].begin(), m_neighbours[v].end()), m_neighbours[v].end());
-    }
-    // The triangle across each side (the shell is closed and manifold: one).
-    std::unordered_map<std::uint64_t, std::size_t> side;
-    auto key = [](std::size_t a, std::size_t b) { return std::uint64_t(a) << 32 | std::uint64_t(b); };
-    for (std::size_t f = 0; f < m; ++f)
-      for (int i = 0; i < 3; ++i) side.emplace(key(s.triangles[f][i], s.triangles[f][(i + 1) % 3]), f);
-    m_across.assign(3 * m, m);
-    for (std::size_t f = 0; f < m; ++f)
+    // The triangle across each side: the other one at its first corner with its second (the
+    // shell is closed and manifold: one).
+    for (std::size_t f = 0; f < s.triangles.size(); ++f)
       for (int i = 0; i < 3; ++i) {
-        const auto it = side.find(key(s.triangles[f][(i + 1) % 3], s.triangles[f][i]));
-        if (it != side.end()) m_across[3 * f + i] = it->second;
+        const std::size_t a = s.triangles[f][i], b = s.triangles[f][(i + 1) % 3];
+        for_each_triangle_at(a, [&](std::size_t g) {
+          const auto& t = s.triangles[g];
+          if (g != f && std::count(t.begin(), t.end(), b) > 0) m_across[3 * f + i] = g;
+        });
       }
-    m_distance.assign(n, std::numeric_limits<double>::infinity());
-    m_counted.assign(n, false);
-    m_state.assign(m + 1, Out); // (m: no triangle)
   }
 
   /// The Euler characteristic of the component at v of the surface within r of v (1 if it has
@@ -113,9 +101,12 @@ public:
         const auto& t = m_s.triangles[f];
         if (reached(t[0]) && reached(t[1]) && reached(t[2])) add(f);
       });
-      for (std::size_t w : m_neighbours[u])
-        if (!reached(w) && std::all_of(m_neighbours[w].begin(), m_neighbours[w].end(), reached))
-          for_each_triangle_at(w, add);
+      for_each_neighbour(u, [&](std::size_t w) {
+        if (reached(w)) return;
+        bool all = true;
+        for_each_neighbour(w, [&](std::size_t x) { all = all && reached(x); });
+        if (all) for_each_triangle_at(w, add);
+      });
     }
     // The component at v, over shared sides, and its vertices, sides and triangles.
     m_component.clear();
@@ -165,6 +156,16 @@ private:
     for (std::size_t k = m_stars.start[v]; k < m_stars.start[v + 1]; ++k) f(m_stars.at[k]);
   }
 
+  /// f(w) for each neighbour w of v (twice each: once from each triangle of their edge).
+  template <class F>
+  void for_each_neighbour(std::size_t v, const F& f) const
+  {
+    for_each_triangle_at(v, [&](std::size_t t) {
+      for (std::size_t c : m_s.triangles[t])
+        if (c != v) f(c);
+    });
+  }
+
   /// The boundary cycles of m_component (its sides without a triangle of it across, in its turn).
   void boundary_cycles(std::vector<std::vector<std::size_t>>& cycles) const
   {
@@ -206,7 +207,7 @@ private:
       const std::size_t u = item.second;
       if (item.first > m_distance[u]) continue;
       m_reached.push_back(u);
-      for (std::size_t w : m_neighbours[u]) {
+      for_each_neighbour(u, [&](std::size_t w) {
         const V e = m_s.points[w] - m_s.points[u];
         const double dw = item.first + std::sqrt(dot(e, e));
         if (dw <= r && dw < m_distance[w]) {
@@ -215,14 +216,13 @@ private:
           m_queue.push_back({dw, w});
           std::push_heap(m_queue.begin(), m_queue.end(), later);
         }
-      }
+      });
     }
   }
 
   using Item = std::pair<double, std::size_t>;
   const Shell& m_s;
   const Vertex_stars& m_stars;
-  std::vector<std::vector<std::size_t>> m_neighbours;
   std::vector<std::size_t> m_across; // the triangle across side i of f: m_across[3 f + i]
   std::vector<double> m_distance;
   std::vector<bool> m_counted;
