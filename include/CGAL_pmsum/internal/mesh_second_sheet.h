@@ -183,9 +183,9 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
     }
   });
   for (const Segment& c : chosen)
-    if (c.under && c.from != c.q && free_ends_between(search, c.from, c.q).empty()) return true;
+    if (c.under && inside_segment(search, c.from, c.q)) return true;
   for (const Segment& c : chosen)
-    if (!c.under && c.from != c.q && free_segment(search, c.from, c.q)) return true;
+    if (!c.under && free_segment(search, c.from, c.q)) return true;
   return false;
 }
 

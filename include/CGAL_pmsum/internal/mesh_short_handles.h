@@ -262,7 +262,6 @@ inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::v
   double inwards = 0;
   for (std::size_t i : cycle) inwards += dot(stars.vertex_normal[i], to_axis(s.points[i]));
   const bool tunnel = inwards > 0;
-  auto inside = [&](const V& a, const V& b) { return a != b && free_ends_between(search, a, b).empty(); };
   const double start = std::ldexp(1., -20);
   for (std::size_t i : cycle) {
     const V& p = s.points[i];
@@ -272,8 +271,8 @@ inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::v
     // mouth lies on the face it opens on: the segment straight out would run along that face).
     const V beyond = p - in + scaled(unit(stars.vertex_normal[i]), (tunnel ? -1 : 1) * std::sqrt(dot(in, in)));
     const V near = p + scaled(in, start), behind = p + scaled(beyond - p, start);
-    if (tunnel ? !(free_segment(search, near, p + in) && inside(beyond, behind))
-               : !(inside(near, p + in) && free_segment(search, beyond, behind)))
+    if (tunnel ? !(free_segment(search, near, p + in) && inside_segment(search, beyond, behind))
+               : !(inside_segment(search, near, p + in) && free_segment(search, beyond, behind)))
       return false;
   }
   return true;

@@ -60,6 +60,10 @@ inline bool free_segment(Segment_search& search, const Position& a, const Positi
   return ends.size() == 2 && CGAL::is_zero(ends[0].num) && compare(ends[1], Segment_parameter::one()) == CGAL::ZERO;
 }
 
+/// Is the segment from a to b inside the sum (no free part)? False if a = b.
+inline bool inside_segment(Segment_search& search, const Position& a, const Position& b)
+{ return a != b && free_ends_between(search, a, b).empty(); }
+
 /// Is a void shell of `mesh` (closed, manifold, without self-intersections, bounding a
 /// volume; its vertices on the boundary of the sum) refuted by a free segment to another
 /// shell (see the file comment)? At most `tests` segments per void, from its vertices
