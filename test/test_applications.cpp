@@ -752,6 +752,61 @@ TEST_CASE("fill_holes: the same triangles whatever the heap addresses", "[applic
   }
 }
 
+TEST_CASE("fill_hole_by_short_sides: a slit is zipped, with inner sides no longer than needed", "[applications][mesh]")
+{
+  // A slit between two rows of m + 1 points, spacing s, the rows L apart (a ladder): every
+  // triangulation whose inner sides join points of the two rows at most one step apart has
+  // m - 1 rungs (L) and m diagonals (sqrt(s^2 + L^2)), and any other inner side is longer (two
+  // steps along a row: 2 s). Around the slit, one triangle beyond each border edge.
+  const int m = 12;
+  const double s = 1, L = 0.5, diagonal = std::sqrt(s * s + L * L);
+  auto ladder = [&](Mesh& mesh) {
+    std::vector<Mesh::Vertex_index> cycle; // the slit's border: row a forwards, row b backwards
+    for (int i = 0; i <= m; ++i) cycle.push_back(mesh.add_vertex(IK::Point_3(i * s, 0, 0)));
+    for (int i = m; i >= 0; --i) cycle.push_back(mesh.add_vertex(IK::Point_3(i * s, L, 0)));
+    const std::size_t n = cycle.size();
+    for (std::size_t k = 0; k < n; ++k) { // beyond the border edge u -> v, away from the slit's middle
+      const IK::Point_3 u = mesh.point(cycle[k]), v = mesh.point(cycle[(k + 1) % n]);
+      const IK::Vector_3 out = CGAL::midpoint(u, v) - IK::Point_3(m * s / 2, L / 2, 0);
+      const auto x = mesh.add_vertex(CGAL::midpoint(u, v) + out / std::sqrt(out.squared_length()));
+      REQUIRE(mesh.add_face(cycle[(k + 1) % n], cycle[k], x) != Mesh::null_face());
+    }
+    return mesh.halfedge(cycle[0], cycle[1]); // (on the slit's side: no face)
+  };
+  Mesh mesh;
+  const auto h = ladder(mesh);
+  REQUIRE(mesh.is_border(h));
+  std::vector<Mesh::Face_index> added;
+  REQUIRE(CGAL::Pmsum::internal::fill_hole_by_short_sides(mesh, h, 2 * diagonal, std::back_inserter(added)));
+  CHECK(added.size() == std::size_t(2 * m));
+  CHECK(!mesh.is_border(h));
+  CHECK(CGAL::is_valid_polygon_mesh(mesh));
+  double longest = 0;
+  std::size_t inner = 0;
+  for (Mesh::Face_index f : added) {
+    int in_a = 0; // corners in row a (y = 0): every triangle has one or two
+    for (auto c : mesh.halfedges_around_face(mesh.halfedge(f))) {
+      in_a += mesh.point(mesh.target(c)).y() == 0;
+      if (!mesh.is_border(mesh.opposite(c)) && std::count(added.begin(), added.end(), mesh.face(mesh.opposite(c)))) {
+        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(c)), mesh.point(mesh.target(c)))));
+        ++inner;
+      }
+    }
+    CHECK((in_a == 1 || in_a == 2));
+  }
+  CHECK(inner == std::size_t(2 * (2 * m - 1))); // (each inner side seen from its two triangles)
+  CHECK(std::abs(longest - diagonal) < 1e-12);
+  // Shorter than the diagonal allowed: no triangulation, the slit left open.
+  Mesh open;
+  const auto g = ladder(open);
+  const std::size_t faces_before = open.number_of_faces();
+  added.clear();
+  CHECK(!CGAL::Pmsum::internal::fill_hole_by_short_sides(open, g, 0.99 * diagonal, std::back_inserter(added)));
+  CHECK(added.empty());
+  CHECK(open.number_of_faces() == faces_before);
+  CHECK(open.is_border(g));
+}
+
 #include <CGAL_pmsum/measure_mesh_distance.h>
 
 TEST_CASE("measure_mesh_distance: closed-form distances both ways", "[applications][mesh]")

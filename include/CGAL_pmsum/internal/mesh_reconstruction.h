@@ -156,6 +156,83 @@ void on_own_thread(const F& f)
   if (failure) std::rethrow_exception(failure);
 }
 
+/// Closes the hole whose border holds `h` with the triangulation of its border points whose
+/// longest inner side is the shortest (of equal ones, the one whose inner sides are shortest
+/// in total): across a slit (a crease the reconstruction left open, its two sides at an angle)
+/// the triangles zip the sides together, where CGAL's weights (dihedral angles, then area)
+/// may prefer triangles along the slit. No inner side joins two points already joined, or a
+/// point to itself (a border through a point twice). Returns false, the hole left open, if
+/// every such triangulation has an inner side longer than `longest_edge`; else the triangles
+/// added go to `added_out`.
+template <class TriangleMesh, class OutputIterator>
+bool fill_hole_by_short_sides(TriangleMesh& mesh, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                              double longest_edge, OutputIterator added_out)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::vector<vertex_descriptor> v; // the border's points in its order (the hole's faces run that way)
+  for (auto b : CGAL::halfedges_around_face(h, mesh)) v.push_back(source(b, mesh));
+  const std::size_t n = v.size();
+  if (n < 3) return false;
+  const double infinity = std::numeric_limits<double>::infinity();
+  struct Cost { double longest = 0, total = 0; };
+  auto better = [](const Cost& a, const Cost& b) { return a.longest < b.longest || (a.longest == b.longest && a.total < b.total); };
+  // the inner side (i, j), i < j: its length, infinite where it may not be drawn
+  std::vector<double> side(n * n, infinity);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j)
+      if (!(i == 0 && j == n - 1) && v[i] != v[j] && !halfedge(v[i], v[j], mesh).second) {
+        const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, v[i]), get(vpm, v[j]))));
+        if (l <= longest_edge) side[i * n + j] = l;
+      }
+  auto inner = [&](std::size_t i, std::size_t j) { return j == i + 1 ? 0. : side[i * n + j]; }; // (a border side: 0)
+  // best[i n + j], apex[i n + j]: the triangulation of the points i..j (j >= i + 2), its side (i, j) not counted
+  std::vector<Cost> best(n * n);
+  std::vector<std::size_t> apex(n * n, n);
+  for (std::size_t gap = 2; gap < n; ++gap)
+    for (std::size_t i = 0; i + gap < n; ++i) {
+      const std::size_t j = i + gap;
+      Cost c{infinity, infinity};
+      for (std::size_t k = i + 1; k < j; ++k) {
+        const double a = inner(i, k), b = inner(k, j);
+        if (a == infinity || b == infinity) continue;
+        const Cost& l = best[i * n + k];
+        const Cost& r = best[k * n + j];
+        const Cost t{(std::max)({l.longest, r.longest, a, b}), l.total + r.total + a + b};
+        if (t.longest < infinity && better(t, c)) {
+          c = t;
+          apex[i * n + j] = k;
+        }
+      }
+      best[i * n + j] = c;
+    }
+  if (apex[n - 1] == n) return false;
+  // ears first (children before their parent): each triangle added shares two consecutive
+  // sides of the hole left, so the hole stays one cycle and the mesh a manifold
+  std::vector<std::array<std::size_t, 3>> order;
+  std::vector<std::pair<std::size_t, std::size_t>> stack(1, {0, n - 1});
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    const std::size_t k = apex[i * n + j];
+    order.push_back({i, k, j});
+    if (k >= i + 2) stack.push_back({i, k});
+    if (j >= k + 2) stack.push_back({k, j});
+  }
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> added;
+  for (auto t = order.rbegin(); t != order.rend(); ++t) {
+    const std::array<vertex_descriptor, 3> corners = {v[(*t)[0]], v[(*t)[1]], v[(*t)[2]]};
+    added.push_back(CGAL::Euler::add_face(corners, mesh));
+    if (added.back() == boost::graph_traits<TriangleMesh>::null_face()) { // (not seen; a border through a point twice?)
+      added.pop_back();
+      for (auto f : added) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+      return false;
+    }
+  }
+  std::copy(added.begin(), added.end(), added_out);
+  return true;
+}
+
 /// Closes the holes the reconstruction leaves (at sharp corners and along the rims of thin
 /// parts) with triangles between the points of each hole's border (CGAL's triangulate_hole:
 /// no new vertex), searched over every triangulation of the hole first, then, if none is found
@@ -164,8 +241,11 @@ void on_own_thread(const F& f)
 /// the Delaunay triangulation is not deterministic: it filled one hole in two ways, depending
 /// on where earlier allocations had left its triangulation's cells; its weights seem to depend
 /// on the order in which it visits them. The cubic search always gives the same filling.)
-/// A hole is left open if its border has more than 300 edges, or if neither filling is made
-/// without such a long edge.
+/// Where neither is made without such a long edge, or the border has more than 300 edges (the
+/// cubic search's cost), the hole is closed by fill_hole_by_short_sides() if that can be done
+/// without one (a slit along a sharp crease: CGAL's fillings ran along it, with sides of 3-6 d;
+/// zipped, its sides are about the slit's width). A hole is left open if its border has more
+/// than 1000 edges, or if no filling is made without such a long edge.
 /// Whether the result is valid is for check_mesh() to say. The triangles added and kept go to
 /// `added_out`.
 template <class TriangleMesh, class OutputIterator>
@@ -184,8 +264,10 @@ void fill_holes(TriangleMesh& mesh, double longest_edge, OutputIterator added_ou
   for (halfedge_descriptor h : borders) {
     std::size_t size = 0;
     for (halfedge_descriptor b : CGAL::halfedges_around_face(h, mesh)) size += (void(b), 1);
-    if (size > 300) continue;
+    if (size > 1000) continue;
+    bool filled = false;
     for (const bool delaunay : {false, true}) { // (a filling removed leaves h on the hole's border)
+      if (size > 300) break;
       std::vector<face_descriptor> added;
       PMP::triangulate_hole(mesh, h, std::back_inserter(added), CGAL::parameters::use_delaunay_triangulation(delaunay));
       bool cuts = false; // (the hole's own border edges may be long: faces of the plane-wise way)
@@ -196,8 +278,10 @@ void fill_holes(TriangleMesh& mesh, double longest_edge, OutputIterator added_ou
       for (face_descriptor f : added)
         if (cuts) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
         else *added_out++ = f;
-      if (!cuts && !added.empty()) break;
+      filled = !cuts && !added.empty();
+      if (filled) break;
     }
+    if (!filled) fill_hole_by_short_sides(mesh, h, longest_edge, added_out);
   }
 }
 
