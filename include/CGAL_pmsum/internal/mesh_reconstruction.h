@@ -181,7 +181,7 @@ bool fill_hole_by_short_sides(TriangleMesh& mesh, typename boost::graph_traits<T
   std::vector<double> side(n * n, infinity);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 2; j < n; ++j)
-      if (!(i == 0 && j == n - 1) && v[i] != v[j] && !halfedge(v[i], v[j], mesh).second) {
+      if (v[i] != v[j] && !halfedge(v[i], v[j], mesh).second) { // (the border side (0, n - 1) is joined)
         const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, v[i]), get(vpm, v[j]))));
         if (l <= longest_edge) side[i * n + j] = l;
       }
