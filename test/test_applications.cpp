@@ -1283,12 +1283,14 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
   }
 }
 
-namespace {
-
-/// The box [lo, hi]^3 with the square tunnel [in_lo, in_hi]^2 along z, each face cut into 128
-/// triangles (a mesh of Euler characteristic 0).
-Mesh box_with_tunnel(double lo, double hi, double in_lo, double in_hi)
+TEST_CASE("has_false_short_handle: a tunnel of the mesh narrower than d, the sum's or not", "[applications][mesh]")
 {
+  // The block [0, 4]^3 with the tunnel [1.5, 2.5]^2 along z (tunnel_block()) plus the cube of
+  // half-side c: for c = 0.45 the tunnel [1.95, 2.05]^2, 0.1 wide, through the box [-c, 4 + c]^3;
+  // for c = 0.55 it is closed. The mesh: that box with that tunnel (0.4 round, a handle shorter
+  // than d = 1.6), or the box alone.
+  using namespace CGAL::Pmsum::internal;
+  const double lo = -0.45, hi = 4.45, in_lo = 1.95, in_hi = 2.05;
   Soup frame;
   for (double z : {lo, hi})
     for (const auto& [a, b] : {std::pair{lo, hi}, std::pair{in_lo, in_hi}})
@@ -1305,20 +1307,7 @@ Mesh box_with_tunnel(double lo, double hi, double in_lo, double in_hi)
     quad(outer(k, 0), outer(k + 1, 0), outer(k + 1, 1), outer(k, 1)); // sides, facing out
     quad(inner(k + 1, 0), inner(k, 0), inner(k, 1), inner(k + 1, 1)); // the tunnel's, facing into it
   }
-  return to_mesh<Mesh>(subdivided(frame, 3));
-}
-
-} // namespace
-
-TEST_CASE("has_false_short_handle: a tunnel of the mesh narrower than d, the sum's or not", "[applications][mesh]")
-{
-  // The block [0, 4]^3 with the tunnel [1.5, 2.5]^2 along z (tunnel_block()) plus the cube of
-  // half-side c: for c = 0.45 the tunnel [1.95, 2.05]^2, 0.1 wide, through the box [-c, 4 + c]^3;
-  // for c = 0.55 it is closed. The mesh: that box with that tunnel (0.4 round, a handle shorter
-  // than d = 0.8), or the box alone.
-  using namespace CGAL::Pmsum::internal;
-  const double lo = -0.45, hi = 4.45;
-  const Mesh tunnel = box_with_tunnel(lo, hi, 1.95, 2.05), solid = to_mesh<Mesh>(subdivided(box({lo, lo, lo}, {hi, hi, hi}), 3));
+  const Mesh tunnel = to_mesh<Mesh>(subdivided(frame, 3)), solid = to_mesh<Mesh>(subdivided(box({lo, lo, lo}, {hi, hi, hi}), 3));
   REQUIRE(CGAL::Pmsum::check_mesh(tunnel).valid());
   REQUIRE(CGAL::Pmsum::check_mesh(tunnel).euler_characteristic == 0);
   struct Case { const char* what; double c; const Mesh& mesh; bool false_handle; };
@@ -1329,52 +1318,7 @@ TEST_CASE("has_false_short_handle: a tunnel of the mesh narrower than d, the sum
     const Cd_geometry geometry(operands.first, operands.second);
     Cd_filter filter(&geometry);
     Segment_search search(filter);
-    CHECK(has_false_short_handle(k.mesh, 0.8, search) == k.false_handle);
-  }
-}
-
-TEST_CASE("sum_has_tube: a cycle round a tunnel, not one across a concave crease", "[applications][mesh]")
-{
-  // The tunnel block plus the cube of half-side 0.25: the box [-0.25, 4.25]^3 with the tunnel
-  // [1.75, 2.25]^2 along z, whose sides meet in concave creases. Cycles of the mesh's
-  // vertices (1/16 apart across the tunnel, 9/16 along it): round the tunnel at z = 2 (its
-  // vertex normals turn once round the axis z), and across the crease x = y = 1.75, a loop
-  // over the two sides that meet there, from z = 1.4375 to 2.5625 (the normals turn by 0).
-  // From each vertex of the latter, the segment towards the axis through its centroid runs in
-  // the tunnel and the one away from it in the solid, as for a tunnel: the turn of the
-  // normals tells them apart.
-  using namespace CGAL::Pmsum::internal;
-  const double c = 0.25, lo = -c, hi = 4 + c, a = 1.5 + c, b = 2.5 - c;
-  const Mesh mesh = box_with_tunnel(lo, hi, a, b);
-  const CGAL::Pmsum::Shell s = to_shell(mesh);
-  const Vertex_stars stars(s);
-  auto at = [&](double x, double y, double z) {
-    for (std::size_t i = 0; i < s.points.size(); ++i)
-      if (s.points[i] == std::array<double, 3>{x, y, z}) return i;
-    FAIL("no vertex at " << x << " " << y << " " << z);
-    return std::size_t(0);
-  };
-  const double step = (b - a) / 8, z = lo + 4 * (hi - lo) / 8, z0 = lo + 3 * (hi - lo) / 8, z1 = lo + 5 * (hi - lo) / 8;
-  std::vector<std::size_t> round, across;
-  for (int k = 0; k < 8; ++k) round.push_back(at(a + k * step, a, z));
-  for (int k = 0; k < 8; ++k) round.push_back(at(b, a + k * step, z));
-  for (int k = 0; k < 8; ++k) round.push_back(at(b - k * step, b, z));
-  for (int k = 0; k < 8; ++k) round.push_back(at(a, b - k * step, z));
-  for (int k = 4; k > 0; --k) across.push_back(at(a, a + k * step, z0)); // the side x = a
-  for (int k = 0; k <= 4; ++k) across.push_back(at(a + k * step, a, z0)); // the side y = a
-  for (int k = 4; k >= 0; --k) across.push_back(at(a + k * step, a, z1));
-  for (int k = 1; k <= 4; ++k) across.push_back(at(a, a + k * step, z1));
-  REQUIRE(std::abs(std::abs(normal_turn(stars, round, {0, 1, 0}, {0, 0, 1})) - 2 * M_PI) < 1e-9);
-  REQUIRE(std::abs(normal_turn(stars, across, {1, 0, 0}, {0, 0, 1})) < 1e-9);
-  struct Case { const char* what; double c; bool round, across; };
-  for (const Case& k : {Case{"the sum's tunnel", c, true, false}, Case{"the tunnel closed in the sum", 0.55, false, false}}) {
-    INFO(k.what);
-    const auto operands = cd_operands(box({-k.c, -k.c, -k.c}, {k.c, k.c, k.c}), pmsum_shapes::tunnel_block());
-    const Cd_geometry geometry(operands.first, operands.second);
-    Cd_filter filter(&geometry);
-    Segment_search search(filter);
-    CHECK(sum_has_tube(s, stars, round, search) == k.round);
-    CHECK(sum_has_tube(s, stars, across, search) == k.across);
+    CHECK(has_false_short_handle(k.mesh, 1.6, search) == k.false_handle);
   }
 }
 

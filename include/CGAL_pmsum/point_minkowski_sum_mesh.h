@@ -162,7 +162,7 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), no void the sum does not have
-/// (has_false_void()), no second sheet (has_second_sheet()), no handle shorter than 2 d round that the sum
+/// (has_false_void()), no second sheet (has_second_sheet()), no handle narrower than d that the sum
 /// is not shown to have (has_false_short_handle()), the points' distance to the mesh and the
 /// mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
 /// with the trim curves searched wherever they are (not only where the covering needs them),
@@ -312,10 +312,10 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// narrower than `d` that the reconstruction closed), no triangle lies inside the sum under a
 /// vertex, or outside it over the vertex, facing its way, as a second sheet over that part of
 /// the boundary (exact segment tests along the vertex's normal: a pocket between two sheets,
-/// a handle the sum may not have), every handle of it shorter than about `2d` round is one the
-/// sum has (where the mesh within `d` of a vertex along its edges is not a disk, a cycle of its
-/// border must go round a tube of the sum: its normals turn once round the tube's axis, and
-/// exact segment tests towards the axis and away from it), every output point
+/// a handle the sum may not have), every handle of it narrower than about `d` is one the sum
+/// has (where the mesh within `d/2` of a vertex along its edges is not a disk, a cycle of its
+/// border must go round a tube of the sum: exact segment tests towards the tube's axis and
+/// away from it), every output point
 /// of the sum lies closer than `d'` to it and every point of it closer than `d'` to an output
 /// point (`d'` the covering distance used): if the
 /// reconstruction at `d` fails a check, the same points are triangulated plane by plane (the
