@@ -20,7 +20,8 @@ import time
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "validation"))
+sys.path.insert(0, os.path.dirname(HERE))
+from run_mesh import read_off  # noqa: E402  (it puts benchmark/validation on the path)
 from run_suite import OPEN, SUITE, shape_path  # noqa: E402
 
 # name, factor on d, rotation seed (None: P as it is)
@@ -32,22 +33,16 @@ def turned(path, seed, work):
     out = os.path.join(work, "turned%d-%s" % (seed, os.path.basename(path)))
     if os.path.exists(out):
         return out
-    tokens = open(path).read().split()
-    i = 1 if tokens[0] == "OFF" else 0
-    n, f = int(tokens[i]), int(tokens[i + 1])
-    points = np.array(tokens[i + 3:i + 3 + 3 * n], float).reshape(n, 3)
+    points, faces = read_off(path)
     q, _ = np.linalg.qr(np.random.default_rng(seed).normal(size=(3, 3)))
     if np.linalg.det(q) < 0:
         q[:, 0] *= -1
     with open(out, "w") as o:
-        o.write("OFF\n%d %d 0\n" % (n, f))
-        for p in points @ q.T:
+        o.write("OFF\n%d %d 0\n" % (len(points), len(faces)))
+        for p in np.array(points) @ q.T:
             o.write("%.17g %.17g %.17g\n" % tuple(p))
-        k = i + 3 + 3 * n
-        for _ in range(f):
-            c = int(tokens[k])
-            o.write(" ".join(tokens[k:k + c + 1]) + "\n")
-            k += c + 1
+        for f in faces:
+            o.write("%d %s\n" % (len(f), " ".join(map(str, f))))
     return out
 
 
