@@ -11,6 +11,7 @@
 #include <boost/property_map/function_property_map.hpp>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -808,6 +809,62 @@ TEST_CASE("fill_hole_by_short_sides: a slit is zipped, with inner sides no longe
 }
 
 #include <CGAL_pmsum/measure_mesh_distance.h>
+
+TEST_CASE("fill_holes with the points inside: a hole too wide for its border alone", "[applications][mesh]")
+{
+  // Points on the unit sphere (a Fibonacci lattice, about s apart) joined by their convex hull;
+  // the triangles with a corner in a cap of chord radius 0.35 taken away: a hole about 0.7
+  // across, every filling of its border alone with an inner side longer than 3 d (d = s), and
+  // some 60 points inside it at no vertex.
+  const std::size_t count = 2000;
+  std::vector<IK::Point_3> points;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double z = 1 - (2 * double(i) + 1) / double(count), r = std::sqrt(1 - z * z), phi = double(i) * 2.399963229728653;
+    points.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  Mesh hull;
+  CGAL::convex_hull_3(points.begin(), points.end(), hull);
+  REQUIRE(hull.number_of_vertices() == count);
+  std::map<IK::Point_3, std::size_t> index;
+  for (std::size_t i = 0; i < count; ++i) index.emplace(points[i], i);
+  const IK::Point_3 pole(0, 0, 1);
+  auto in_cap = [&](const IK::Point_3& p) { return CGAL::squared_distance(p, pole) < 0.35 * 0.35; };
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for (Mesh::Face_index f : hull.faces()) {
+    std::array<std::size_t, 3> t;
+    int k = 0, capped = 0;
+    for (Mesh::Vertex_index v : hull.vertices_around_face(hull.halfedge(f))) {
+      t[k++] = index.at(hull.point(v));
+      capped += in_cap(hull.point(v));
+    }
+    if (capped == 0) triangles.push_back(t);
+  }
+  const std::size_t inside = std::size_t(std::count_if(points.begin(), points.end(), in_cap));
+  CHECK(inside > 50);
+  const double d = std::sqrt(4 * CGAL_PI / double(count));
+  using CGAL::Pmsum::internal::Triangles_from;
+  // From its border alone the hole stays open: the cap's points are not in the mesh.
+  Mesh open;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, open);
+  std::vector<Mesh::Face_index> added;
+  CGAL::Pmsum::internal::fill_holes(open, 3 * d, std::back_inserter(added));
+  CHECK(added.empty());
+  // With the points: closed through every one of them, within d of them.
+  Mesh mesh;
+  const auto checks = CGAL::Pmsum::internal::mesh_from_triangles<CGAL::Sequential_tag>(
+    points, triangles, Triangles_from::one_delaunay_triangulation, d, mesh);
+  CHECK(checks.valid());
+  CHECK(checks.shells == 1);
+  CHECK(mesh.number_of_vertices() == count);
+  CHECK(long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces()) == 2);
+  CHECK(CGAL::Pmsum::internal::largest_distance_to_mesh(points, mesh) == 0);
+  CHECK(CGAL::Pmsum::internal::mesh_distance_bound(mesh, points, d) < d);
+  // No inner side of the filling longer than 3 d.
+  double longest = 0;
+  for (Mesh::Edge_index e : mesh.edges())
+    longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1)))));
+  CHECK(longest <= 3 * d);
+}
 
 TEST_CASE("measure_mesh_distance: closed-form distances both ways", "[applications][mesh]")
 {

@@ -15,7 +15,9 @@
 // shown within d of the points (mesh_distance_bound()), and such triangles bridge concave
 // corners, where the crease points carry no normal.
 // The reconstruction leaves holes at sharp corners, and along the rims of parts thinner than
-// about three times the point spacing: they are closed by triangulating each hole's border.
+// about three times the point spacing: they are closed by triangulating each hole's border,
+// or, where the hole is too wide for that, with the points the reconstruction left inside it
+// (mesh_hole_filling.h).
 // Where a filled hole crosses the triangles beside it, those are cut away with their
 // neighbourhood and the hole filled again. Only the triangles that fill holes can cross
 // another: the advancing front's are facets of one 3D Delaunay triangulation of the points'
@@ -31,6 +33,7 @@
 #define CGAL_PMSUM_INTERNAL_MESH_RECONSTRUCTION_H
 
 #include <CGAL_pmsum/check_mesh.h>
+#include <CGAL_pmsum/internal/mesh_hole_filling.h>
 #include <CGAL_pmsum/measure_mesh_distance.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
@@ -154,135 +157,6 @@ void on_own_thread(const F& f)
     }
   }).join();
   if (failure) std::rethrow_exception(failure);
-}
-
-/// Closes the hole whose border holds `h` with the triangulation of its border points whose
-/// longest inner side is the shortest (of equal ones, the one whose inner sides are shortest
-/// in total): across a slit (a crease the reconstruction left open, its two sides at an angle)
-/// the triangles zip the sides together, where CGAL's weights (dihedral angles, then area)
-/// may prefer triangles along the slit. No inner side joins two points already joined, or a
-/// point to itself (a border through a point twice). Returns false, the hole left open, if
-/// every such triangulation has an inner side longer than `longest_edge`; else the triangles
-/// added go to `added_out`.
-template <class TriangleMesh, class OutputIterator>
-bool fill_hole_by_short_sides(TriangleMesh& mesh, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
-                              double longest_edge, OutputIterator added_out)
-{
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  std::vector<vertex_descriptor> v; // the border's points in its order (the hole's faces run that way)
-  for (auto b : CGAL::halfedges_around_face(h, mesh)) v.push_back(source(b, mesh));
-  const std::size_t n = v.size();
-  if (n < 3) return false;
-  const double infinity = std::numeric_limits<double>::infinity();
-  struct Cost { double longest = 0, total = 0; };
-  auto better = [](const Cost& a, const Cost& b) { return a.longest < b.longest || (a.longest == b.longest && a.total < b.total); };
-  // the inner side (i, j), i < j: its length, infinite where it may not be drawn
-  std::vector<double> side(n * n, infinity);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 2; j < n; ++j)
-      if (v[i] != v[j] && !halfedge(v[i], v[j], mesh).second) { // (the border side (0, n - 1) is joined)
-        const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, v[i]), get(vpm, v[j]))));
-        if (l <= longest_edge) side[i * n + j] = l;
-      }
-  auto inner = [&](std::size_t i, std::size_t j) { return j == i + 1 ? 0. : side[i * n + j]; }; // (a border side: 0)
-  // best[i n + j], apex[i n + j]: the triangulation of the points i..j (j >= i + 2), its side (i, j) not counted
-  std::vector<Cost> best(n * n);
-  std::vector<std::size_t> apex(n * n, n);
-  for (std::size_t gap = 2; gap < n; ++gap)
-    for (std::size_t i = 0; i + gap < n; ++i) {
-      const std::size_t j = i + gap;
-      Cost c{infinity, infinity};
-      for (std::size_t k = i + 1; k < j; ++k) {
-        const double a = inner(i, k), b = inner(k, j);
-        if (a == infinity || b == infinity) continue;
-        const Cost& l = best[i * n + k];
-        const Cost& r = best[k * n + j];
-        const Cost t{(std::max)({l.longest, r.longest, a, b}), l.total + r.total + a + b};
-        if (t.longest < infinity && better(t, c)) {
-          c = t;
-          apex[i * n + j] = k;
-        }
-      }
-      best[i * n + j] = c;
-    }
-  if (apex[n - 1] == n) return false;
-  // ears first (children before their parent): each triangle added shares two consecutive
-  // sides of the hole left, so the hole stays one cycle and the mesh a manifold
-  std::vector<std::array<std::size_t, 3>> order;
-  std::vector<std::pair<std::size_t, std::size_t>> stack(1, {0, n - 1});
-  while (!stack.empty()) {
-    const auto [i, j] = stack.back();
-    stack.pop_back();
-    const std::size_t k = apex[i * n + j];
-    order.push_back({i, k, j});
-    if (k >= i + 2) stack.push_back({i, k});
-    if (j >= k + 2) stack.push_back({k, j});
-  }
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> added;
-  for (auto t = order.rbegin(); t != order.rend(); ++t) {
-    const std::array<vertex_descriptor, 3> corners = {v[(*t)[0]], v[(*t)[1]], v[(*t)[2]]};
-    added.push_back(CGAL::Euler::add_face(corners, mesh));
-    if (added.back() == boost::graph_traits<TriangleMesh>::null_face()) { // (not seen; a border through a point twice?)
-      added.pop_back();
-      for (auto f : added) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
-      return false;
-    }
-  }
-  std::copy(added.begin(), added.end(), added_out);
-  return true;
-}
-
-/// Closes the holes the reconstruction leaves (at sharp corners and along the rims of thin
-/// parts) with triangles between the points of each hole's border (CGAL's triangulate_hole:
-/// no new vertex), searched over every triangulation of the hole first, then, if none is found
-/// or it has an edge longer than `longest_edge` (3 d: it would cut across the shape), over the
-/// triangles of the border points' Delaunay triangulation. (CGAL 5.5's search restricted to
-/// the Delaunay triangulation is not deterministic: it filled one hole in two ways, depending
-/// on where earlier allocations had left its triangulation's cells; its weights seem to depend
-/// on the order in which it visits them. The cubic search always gives the same filling.)
-/// Where neither is made without such a long edge, or the border has more than 300 edges (the
-/// cubic search's cost), the hole is closed by fill_hole_by_short_sides() if that can be done
-/// without one (a slit along a sharp crease: CGAL's fillings ran along it, with sides of 3-6 d;
-/// zipped, its sides are about the slit's width). A hole is left open if its border has more
-/// than 1000 edges, or if no filling is made without such a long edge.
-/// Whether the result is valid is for check_mesh() to say. The triangles added and kept go to
-/// `added_out`.
-template <class TriangleMesh, class OutputIterator>
-void fill_holes(TriangleMesh& mesh, double longest_edge, OutputIterator added_out)
-{
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  auto too_long = [&](halfedge_descriptor h) {
-    return CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)))) >
-           longest_edge * longest_edge;
-  };
-  std::vector<halfedge_descriptor> borders;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(borders));
-  for (halfedge_descriptor h : borders) {
-    std::size_t size = 0;
-    for (halfedge_descriptor b : CGAL::halfedges_around_face(h, mesh)) size += (void(b), 1);
-    if (size > 1000) continue;
-    bool filled = false;
-    for (const bool delaunay : {false, true}) { // (a filling removed leaves h on the hole's border)
-      if (size > 300) break;
-      std::vector<face_descriptor> added;
-      PMP::triangulate_hole(mesh, h, std::back_inserter(added), CGAL::parameters::use_delaunay_triangulation(delaunay));
-      bool cuts = false; // (the hole's own border edges may be long: faces of the plane-wise way)
-      const std::set<face_descriptor> filling(added.begin(), added.end());
-      for (face_descriptor f : added)
-        for (halfedge_descriptor e : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-          cuts = cuts || (filling.count(face(opposite(e, mesh), mesh)) && too_long(e));
-      for (face_descriptor f : added)
-        if (cuts) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
-        else *added_out++ = f;
-      filled = !cuts && !added.empty();
-      if (filled) break;
-    }
-    if (!filled) fill_hole_by_short_sides(mesh, h, longest_edge, added_out);
-  }
 }
 
 /// The pairs of triangles of `mesh` that cross (CGAL's self_intersections(); a degenerate
@@ -521,7 +395,7 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points, const std::vec
   const bool delaunay = from == Triangles_from::one_delaunay_triangulation &&
                         std::is_same<typename CGAL::Kernel_traits<Point>::Kernel::FT, double>::value;
   std::set<face_descriptor> filled;
-  fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()));
+  fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()), points);
   // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),
   // cut the crossing triangles with a growing neighbourhood and fill again.
   // The last search that found no crossing, on the mesh as it is, answers that check.
@@ -531,7 +405,7 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points, const std::vec
       self_intersection_free = true;
       break;
     }
-    fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()));
+    fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()), points);
   }
   remove_bubbles(mesh, d); // (removing shells makes no crossing)
   Mesh_checks c = check_mesh_given<ConcurrencyTag>(mesh, self_intersection_free);
@@ -540,35 +414,6 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points, const std::vec
     check_shells(mesh, c); // reorienting changes no position: the other checks stand
   }
   return c;
-}
-
-/// A position rounded to doubles, as a key of the points at the mesh's vertices.
-using Position = std::array<double, 3>;
-struct Position_hash
-{
-  std::size_t operator()(const Position& k) const
-  {
-    std::size_t h = 0;
-    for (double c : k) h = h * 1000003u ^ std::hash<double>()(c);
-    return h;
-  }
-};
-template <class Point>
-Position position(const Point& p)
-{
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-}
-
-/// The indices of the points at no vertex of `mesh` (positions rounded to doubles).
-template <class Point, class TriangleMesh>
-std::vector<std::size_t> points_at_no_vertex(const std::vector<Point>& points, const TriangleMesh& mesh)
-{
-  std::unordered_set<Position, Position_hash> at_vertex;
-  for (auto v : vertices(mesh)) at_vertex.insert(position(get(CGAL::vertex_point, mesh, v)));
-  std::vector<std::size_t> away;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!at_vertex.count(position(points[i]))) away.push_back(i);
-  return away;
 }
 
 /// The part of the point at each position (`part[i]`: of `points[i]`, Sum_parts::of()), to
