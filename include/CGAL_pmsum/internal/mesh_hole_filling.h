@@ -18,8 +18,8 @@
 // Delaunay triangulation of the projections (CGAL's, the border's sides as constraints), its
 // triangles inside the border lifted back. A point is inside the hole if it lies in the box of
 // the hole's border grown by the longest side allowed, is closer to a filling from the border
-// alone (the one whose longest side is the shortest) than to the mesh's other triangles in that
-// box, and projects inside the border. The hole stays open where the border does not project
+// alone (the one made, else the one whose longest side is the shortest, however long) than to
+// the mesh's other triangles in that box, and projects inside the border. The hole stays open where the border does not project
 // to a simple polygon, or an inner side would be longer than that; whether the mesh is valid
 // (a fold of the hole projects twice: its triangles cross), and close enough to the points, the
 // checks of mesh_from_triangles() and point_minkowski_sum_mesh() say.
