@@ -69,6 +69,14 @@ Position position(const Point& p)
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
 }
 
+/// A point rounded to doubles, as a point of Epick.
+template <class Point>
+CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 double_point(const Point& p)
+{
+  const Position x = position(p);
+  return {x[0], x[1], x[2]};
+}
+
 /// The indices of the points at no vertex of `mesh` (positions rounded to doubles).
 template <class Point, class TriangleMesh>
 std::vector<std::size_t> points_at_no_vertex(const std::vector<Point>& points, const TriangleMesh& mesh)
@@ -168,10 +176,7 @@ points_under_filling(const TriangleMesh& mesh, const std::vector<typename boost:
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  auto at = [](const Point& p) {
-    const Position x = position(p);
-    return K::Point_3(x[0], x[1], x[2]);
-  };
+  auto at = [](const Point& p) { return double_point(p); };
   auto triangle = [&](face_descriptor f) {
     const auto g = halfedge(f, mesh);
     return K::Triangle_3(at(get(CGAL::vertex_point, mesh, source(g, mesh))), at(get(CGAL::vertex_point, mesh, target(g, mesh))),
@@ -296,10 +301,7 @@ bool fill_hole_with_points(TriangleMesh& mesh, typename boost::graph_traits<Tria
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  auto at = [&](vertex_descriptor v) {
-    const Position x = position(get(CGAL::vertex_point, mesh, v));
-    return K::Point_3(x[0], x[1], x[2]);
-  };
+  auto at = [&](vertex_descriptor v) { return double_point(get(CGAL::vertex_point, mesh, v)); };
   std::vector<vertex_descriptor> border; // in the hole's order
   std::vector<K::Point_3> border_at, inside_at;
   for (halfedge_descriptor b : CGAL::halfedges_around_face(h, mesh)) {
@@ -312,8 +314,7 @@ bool fill_hole_with_points(TriangleMesh& mesh, typename boost::graph_traits<Tria
   for (std::size_t i = 0; i < n; ++i)
     area = area + CGAL::cross_product(border_at[i] - CGAL::ORIGIN, border_at[(i + 1) % n] - CGAL::ORIGIN);
   for (std::size_t i : inside) {
-    const Position x = position(points[i]);
-    inside_at.emplace_back(x[0], x[1], x[2]);
+    inside_at.push_back(double_point(points[i]));
   }
   std::vector<std::size_t> put_in;
   auto triangles = area == CGAL::NULL_VECTOR ? std::nullopt : triangles_in_plane(border_at, inside_at, area, put_in);
