@@ -1622,6 +1622,54 @@ TEST_CASE("no_face_over_hole: a face over a tunnel's mouth narrower than the poi
   }
 }
 
+TEST_CASE("no_face_joining_parts: a face across a slit, not one across a reflex corner", "[applications][mesh]")
+{
+  namespace in = CGAL::Pmsum::internal;
+  auto operands = [](const Soup& p, const Soup& q) {
+    const Mesh mp = to_mesh<Mesh>(p), mq = to_mesh<Mesh>(q);
+    in::Mesh_descriptors<Mesh> dp, dq;
+    return std::make_tuple(in::make_mesh_data(mp, get(CGAL::vertex_point, mp), false, false, "P", dp),
+                           in::make_mesh_data(mq, get(CGAL::vertex_point, mq), false, false, "Q", dq), mp, mq);
+  };
+  auto hull_of_sums = [](const Mesh& mp, const Mesh& mq, double x_max) { // of P's vertices with x <= x_max
+    std::vector<IK::Point_3> sums;
+    for (auto v : vertices(mp))
+      for (auto w : vertices(mq))
+        if (get(CGAL::vertex_point, mp, v).x() <= x_max)
+          sums.push_back(get(CGAL::vertex_point, mp, v) + (get(CGAL::vertex_point, mq, w) - CGAL::ORIGIN));
+    Mesh hull;
+    CGAL::convex_hull_3(sums.begin(), sums.end(), hull);
+    CGAL::Polygon_mesh_processing::triangulate_faces(hull);
+    return hull;
+  };
+  // Two unit cubes 0.05 apart plus a cube of side 0.02: two boxes 0.03 apart, whose faces in
+  // the planes y = 0, y = 1.02, z = 0 and z = 1.02 are two parts of each. The hull of all the
+  // vertex sums lays faces across the slit, from one part to the other; the left box's
+  // hull does not.
+  const double s = 0.02;
+  {
+    const auto [a, b, mp, mq] = operands(slot_blocks(0.05, false), box({0, 0, 0}, {s, s, s}));
+    in::Face_cover cover(in::candidate_feature_pairs(a, b, true), a, b);
+    CHECK(in::no_face_joining_parts(hull_of_sums(mp, mq, 1), cover));
+    CHECK(!in::no_face_joining_parts(hull_of_sums(mp, mq, 3), cover));
+    REQUIRE(cover.set_plane({0, -1, 0}, 0, 1));
+    CHECK(cover.joins_separate_parts({{{0.5, 0, 0.5}, {1.6, 0, 0.5}, {0.5, 0, 0.9}}}));
+    CHECK(!cover.joins_separate_parts({{{0.5, 0, 0.5}, {1.02, 0, 0.5}, {0.5, 0, 0.9}}}));
+    CHECK(!cover.joins_separate_parts({{{0.5, 0, 0.5}, {1.04, 0, 0.5}, {0.5, 0, 0.9}}})); // (a corner off the facets)
+  }
+  // The L-shape plus the cube: its bottom face (z = 0) is one part, with a reflex corner at
+  // (1.02, 1.02). A triangle across that corner leaves the facets (no_face_over_hole()
+  // refuses it) but joins no parts.
+  {
+    const auto [a, b, mp, mq] = operands(l_shape(), box({0, 0, 0}, {s, s, s}));
+    in::Face_cover cover(in::candidate_feature_pairs(a, b, true), a, b);
+    REQUIRE(cover.set_plane({0, 0, -1}, 0, 2));
+    const std::array<std::array<double, 3>, 3> corner_cut = {{{1 + s, 1 + s + 0.05, 0}, {1 + s + 0.05, 1 + s, 0}, {1 + s - 0.05, 1 + s, 0}}};
+    CHECK(!cover.covers(corner_cut, 1e-9));
+    CHECK(!cover.joins_separate_parts(corner_cut));
+  }
+}
+
 TEST_CASE("no_face_over_empty_space: chords pass, a lid over a tunnel does not", "[applications][mesh]")
 {
   using CGAL::Pmsum::internal::no_face_over_empty_space;

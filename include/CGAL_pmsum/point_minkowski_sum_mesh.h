@@ -224,17 +224,17 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     // The advancing front first; where its mesh is refused, the points plane by plane
     // (internal/plane_triangulation.h), which needs the CD filter's exact test at a point.
     const Cd_geometry* geometry = pipeline.geometry();
+    std::optional<Face_cover> cover; // (of this level's pairs)
     for (int way = 0; way < (geometry ? 2 : 1); ++way) {
       const auto t_way = Clock::now();
       std::vector<std::array<std::size_t, 3>> triangles;
       std::optional<Cd_filter> cd;
-      std::optional<Face_cover> cover;
+      if (!cover && geometry) cover.emplace(pipeline.pairs(), mp, mq);
       auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
         triangles = advancing_front_triangles(positions, normals, dl);
       } else {
         cd.emplace(geometry);
-        cover.emplace(pipeline.pairs(), mp, mq);
         triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, *cover);
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(
@@ -251,9 +251,11 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       }
       ms.mesh_to_boundary_bound = ms.checks.valid() ? mesh_distance_bound(mesh, points, dl)
                                                     : std::numeric_limits<double>::infinity();
-      // Plane by plane, the holes left are closed by fill_holes(): never over empty space.
-      const bool across = cd && ms.checks.valid() &&
-                          (!no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover));
+      // Plane by plane, the holes left are closed by fill_holes(): never over empty space. By
+      // the advancing front, never from one lip of a slit in a plane to the other.
+      const bool across = ms.checks.valid() && cover &&
+                          (cd ? !no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover)
+                              : !no_face_joining_parts(mesh, *cover));
       ms.covering_distance = dl;
       ms.refinements = level.halvings;
       ms.crease_points = creases;
@@ -288,7 +290,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                    : level.again                            ? " without them"
                                                             : "") +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
-                  (across ? "closed a hole over empty space" : refuted ? refuted : level_failure(ms, split));
+                  (across ? (cd ? "closed a hole over empty space" : "laid a face across a slit, from one part of a plane to another")
+                          : refuted ? refuted : level_failure(ms, split));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
   }

@@ -16,11 +16,19 @@
 // which the CD test at its centroid shows). The border pieces are computed exactly: the
 // stretches of the facets' edges not covered on their outer side by another facet of the
 // plane (Epeck, in the plane's projection along an axis).
+//
+// For the advancing front's mesh, a weaker test that it can pass where it cuts a reflex
+// corner of a face: a triangle of a plane must not join two parts of S that do not meet (its
+// corners on no one connected piece of S), as a face laid over the mouth of a slit narrower
+// than the points' spacing does, from the points on one lip to those on the other
+// (joins_separate_parts(); in doubles, pieces nearer than a billionth of the model's size
+// taken as meeting: it only refuses meshes, and never a slit that wide).
 
 #ifndef CGAL_PMSUM_INTERNAL_FACE_COVER_H
 #define CGAL_PMSUM_INTERNAL_FACE_COVER_H
 
 #include <CGAL_pmsum/internal/normal_filter.h>
+#include <CGAL_pmsum/internal/plane_parts.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
@@ -64,57 +72,72 @@ public:
 
   /// Selects the facets in the plane of unit normal n (up to its sign) and offset c (equal
   /// within 1e-9, relative to 1 for the normal and to the model's size for the offset),
-  /// seen along coordinate axis `drop`, and computes the border of their union.
-  void set_plane(const std::array<double, 3>& n, double c, int drop)
+  /// seen along coordinate axis `drop`. Returns: are there any?
+  bool set_plane(const std::array<double, 3>& n, double c, int drop)
   {
-    m_drop = drop;
-    std::vector<std::size_t> chosen;
-    const Key k = key(n, c);
-    for (int m = 0; m < 81; ++m) {
-      Key nk = k;
-      for (int a = 0, r = m; a < 4; ++a, r /= 3) nk[a] += r % 3 - 1;
-      const auto range = m_by_plane.equal_range(nk);
-      for (auto it = range.first; it != range.second; ++it) chosen.push_back(it->second);
+    const double tolerance = 1e-9;
+    // The keys of the planes within the tolerance: in each component, the key of (n, c) and
+    // its neighbour where (n, c) is that near the edge between them (mostly one key).
+    const std::array<double, 4> value = {n[0] * key_scale[0], n[1] * key_scale[1], n[2] * key_scale[2], c * key_scale[3]};
+    std::array<std::vector<std::int64_t>, 4> options;
+    for (int a = 0; a < 4; ++a) {
+      const std::int64_t r = std::llround(value[a]);
+      const double margin = tolerance * key_scale[a] * (a == 3 ? m_scale : 1) + 1e-3, off = value[a] - double(r);
+      options[a] = {r};
+      if (off > 0.5 - margin) options[a].push_back(r + 1);
+      if (off < margin - 0.5) options[a].push_back(r - 1);
     }
+    std::vector<std::size_t> chosen;
+    for (std::int64_t k0 : options[0])
+      for (std::int64_t k1 : options[1])
+        for (std::int64_t k2 : options[2])
+          for (std::int64_t k3 : options[3]) {
+            const auto range = m_by_plane.equal_range(Key{k0, k1, k2, k3});
+            for (auto it = range.first; it != range.second; ++it) chosen.push_back(it->second);
+          }
     std::sort(chosen.begin(), chosen.end());
     chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
     std::vector<std::size_t> in_plane;
     for (std::size_t f : chosen) {
       const Vec3<double>& u = m_facets[f].normal;
       const double s = dot(u, Vec3<double>{n[0], n[1], n[2]}) >= 0 ? 1 : -1;
-      const double tolerance = 1e-9;
       bool same = std::abs(s * m_facets[f].offset - c) <= tolerance * m_scale;
       for (int a = 0; a < 3; ++a) same &= std::abs(s * u[a] - n[a]) <= tolerance;
       if (same) in_plane.push_back(f);
     }
-    // (a plane is asked for again by no_face_over_hole() after plane_triangles())
-    auto known = m_borders.find({in_plane, drop});
-    if (known == m_borders.end()) {
-      std::vector<Polygon> polygons;
-      for (std::size_t f : in_plane) add_polygon(f, polygons);
-      known = m_borders.emplace(std::make_pair(in_plane, drop), border(polygons)).first;
-    }
-    m_border = &known->second;
+    m_plane = {std::move(in_plane), drop};
+    m_border = nullptr;
+    m_parts = nullptr;
+    return !m_plane.first.empty();
   }
 
   /// Does the triangle with these corners, each moved `inset` towards its centroid (beyond
   /// the rounding of its corners), projected along the plane's axis, meet no piece of the
   /// border of the union of the plane's facets? (Then, if one of its points is in the union,
   /// all of it is.) @pre set_plane() was called (the plane whose facets are asked).
-  bool covers(const std::array<std::array<double, 3>, 3>& corners, double inset) const
+  bool covers(const std::array<std::array<double, 3>, 3>& corners, double inset)
   {
+    if (!m_border) { // (a plane is asked for again by no_face_over_hole() after plane_triangles())
+      auto known = m_borders.find(m_plane);
+      if (known == m_borders.end()) {
+        std::vector<Polygon> polygons;
+        for (std::size_t f : m_plane.first) add_polygon(f, polygons);
+        known = m_borders.emplace(m_plane, border(polygons)).first;
+      }
+      m_border = &known->second;
+    }
     std::array<EK::Point_2, 3> t;
     for (int k = 0; k < 3; ++k) {
       double u[2], length = 0;
       for (int a = 0; a < 2; ++a) {
-        const int c = (m_drop + 1 + a) % 3;
+        const int c = (m_plane.second + 1 + a) % 3;
         u[a] = (corners[0][c] + corners[1][c] + corners[2][c]) / 3 - corners[k][c];
         length += u[a] * u[a];
       }
       length = std::sqrt(length);
       if (!(length > 0)) return false;
-      t[k] = EK::Point_2(corners[k][(m_drop + 1) % 3] + inset / length * u[0],
-                         corners[k][(m_drop + 2) % 3] + inset / length * u[1]);
+      t[k] = EK::Point_2(corners[k][(m_plane.second + 1) % 3] + inset / length * u[0],
+                         corners[k][(m_plane.second + 2) % 3] + inset / length * u[1]);
     }
     const EK::Triangle_2 triangle(t[0], t[1], t[2]);
     const CGAL::Bbox_2 box = triangle.bbox();
@@ -123,8 +146,45 @@ public:
     return true;
   }
 
+  /// Do the corners of this triangle of the plane lie on no one part of the union of the
+  /// plane's facets (its connected pieces, facets nearer than a billionth of the model's
+  /// size taken as meeting), each on some part? Such a triangle joins two pieces of a plane
+  /// across a gap, such as the two sides of a slit narrower than the points' spacing: a
+  /// membrane over its mouth. (A triangle that cuts a reflex corner of a face, partly off
+  /// the facets too, has its corners on one part.) @pre set_plane() was called.
+  bool joins_separate_parts(const std::array<std::array<double, 3>, 3>& corners)
+  {
+    if (!m_parts) m_parts = &m_parts_by_plane.try_emplace(m_plane, parts_of_plane()).first->second;
+    Plane_parts::Part_list common;
+    for (int k = 0; k < 3; ++k) {
+      const Plane_parts::Part_list of_corner =
+        m_parts->holding({corners[k][(m_plane.second + 1) % 3], corners[k][(m_plane.second + 2) % 3]});
+      if (of_corner.empty()) return false; // (not on this plane's facets: nothing known)
+      if (k == 0) common = of_corner;
+      else {
+        Plane_parts::Part_list both;
+        std::set_intersection(common.begin(), common.end(), of_corner.begin(), of_corner.end(), std::back_inserter(both));
+        common = std::move(both);
+      }
+    }
+    return common.empty();
+  }
+
 private:
   using Key = std::array<std::int64_t, 4>;
+  using Plane = std::pair<std::vector<std::size_t>, int>; // (facets, axis dropped)
+
+  /// The selected plane's facets projected on its axes (rounded), and their parts.
+  Plane_parts parts_of_plane() const
+  {
+    const int x = (m_plane.second + 1) % 3, y = (m_plane.second + 2) % 3;
+    std::vector<std::vector<std::array<double, 2>>> polygons;
+    for (std::size_t f : m_plane.first) {
+      polygons.emplace_back();
+      for (const auto& c : facet_corners(m_facets[f].pair)) polygons.back().push_back({c[x], c[y]});
+    }
+    return Plane_parts(polygons, 1e-9 * m_scale);
+  }
   /// A corner of a projected facet: the point, and its coordinates (exact sums p + q) each
   /// as the pair (rounded sum, rounding error), which is equal for equal points only.
   struct Corner
@@ -142,8 +202,12 @@ private:
     double offset;       // normal . (a corner)
   };
 
+  static constexpr std::array<double, 4> key_scale = {1e6, 1e6, 1e6, 1e3};
   static Key key(const Vec3<double>& u, double c)
-  { return Key{std::llround(u[0] * 1e6), std::llround(u[1] * 1e6), std::llround(u[2] * 1e6), std::llround(c * 1e3)}; }
+  {
+    return Key{std::llround(u[0] * key_scale[0]), std::llround(u[1] * key_scale[1]), std::llround(u[2] * key_scale[2]),
+               std::llround(c * key_scale[3])};
+  }
 
   /// The corners of the convolution facet of `pair` in cyclic order (rounded sums p + q).
   std::vector<std::array<double, 3>> facet_corners(const Feature_pair& pair) const
@@ -185,7 +249,7 @@ private:
     Polygon polygon;
     for (const std::pair<Index, Index>& corner : corner_indices(m_facets[f].pair)) {
       const auto &p = m_p.points[corner.first], &q = m_q.points[corner.second];
-      const int x = (m_drop + 1) % 3, y = (m_drop + 2) % 3;
+      const int x = (m_plane.second + 1) % 3, y = (m_plane.second + 2) % 3;
       const std::array<double, 2> sx = two_sum(p[x], q[x]), sy = two_sum(p[y], q[y]);
       polygon.push_back(Corner{EK::Point_2(EK::FT(p[x]) + EK::FT(q[x]), EK::FT(p[y]) + EK::FT(q[y])),
                                {sx[0], sx[1], sy[0], sy[1]}});
@@ -290,9 +354,11 @@ private:
   std::vector<Facet> m_facets;
   std::multimap<Key, std::size_t> m_by_plane;
   double m_scale = 0;
-  int m_drop = 2;
-  const Border* m_border = nullptr; // the selected plane's, in m_borders
-  std::map<std::pair<std::vector<std::size_t>, int>, Border> m_borders; // by (facets, axis)
+  Plane m_plane;                    // the selected one
+  const Border* m_border = nullptr; // its border, in m_borders (once asked)
+  const Plane_parts* m_parts = nullptr; // its parts, in m_parts_by_plane (once asked)
+  std::map<Plane, Border> m_borders;
+  std::map<Plane, Plane_parts> m_parts_by_plane;
 };
 
 } // namespace internal
