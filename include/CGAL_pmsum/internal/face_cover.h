@@ -75,7 +75,6 @@ public:
   /// seen along coordinate axis `drop`. Returns: are there any?
   bool set_plane(const std::array<double, 3>& n, double c, int drop)
   {
-    const double tolerance = 1e-9;
     // The keys of the planes within the tolerance: in each component, the key of (n, c) and
     // its neighbour where (n, c) is that near the edge between them (mostly one key).
     const std::array<double, 4> value = {n[0] * key_scale[0], n[1] * key_scale[1], n[2] * key_scale[2], c * key_scale[3]};
@@ -183,7 +182,7 @@ private:
       polygons.emplace_back();
       for (const auto& c : facet_corners(m_facets[f].pair)) polygons.back().push_back({c[x], c[y]});
     }
-    return Plane_parts(polygons, 1e-9 * m_scale);
+    return Plane_parts(polygons, tolerance * m_scale);
   }
   /// A corner of a projected facet: the point, and its coordinates (exact sums p + q) each
   /// as the pair (rounded sum, rounding error), which is equal for equal points only.
@@ -202,6 +201,9 @@ private:
     double offset;       // normal . (a corner)
   };
 
+  /// Relative to 1 for normals, to the model's size for offsets and positions: equal planes,
+  /// and pieces of one that meet, within it.
+  static constexpr double tolerance = 1e-9;
   static constexpr std::array<double, 4> key_scale = {1e6, 1e6, 1e6, 1e3};
   static Key key(const Vec3<double>& u, double c)
   {
