@@ -224,18 +224,21 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     // The advancing front first; where its mesh is refused, the points plane by plane
     // (internal/plane_triangulation.h), which needs the CD filter's exact test at a point.
     const Cd_geometry* geometry = pipeline.geometry();
-    std::optional<Face_cover> cover; // (of this level's pairs)
+    std::optional<Face_cover> cover; // of this level's pairs, made when first asked for
+    auto level_cover = [&]() -> Face_cover& {
+      if (!cover) cover.emplace(pipeline.pairs(), mp, mq);
+      return *cover;
+    };
     for (int way = 0; way < (geometry ? 2 : 1); ++way) {
       const auto t_way = Clock::now();
       std::vector<std::array<std::size_t, 3>> triangles;
       std::optional<Cd_filter> cd;
-      if (!cover && geometry) cover.emplace(pipeline.pairs(), mp, mq);
       auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
         triangles = advancing_front_triangles(positions, normals, dl);
       } else {
         cd.emplace(geometry);
-        triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, *cover);
+        triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, level_cover());
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(
         points, triangles, way == 0 ? Triangles_from::one_delaunay_triangulation : Triangles_from::anywhere, dl, mesh);
@@ -253,9 +256,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                                                     : std::numeric_limits<double>::infinity();
       // Plane by plane, the holes left are closed by fill_holes(): never over empty space. By
       // the advancing front, never from one lip of a slit in a plane to the other.
-      const bool across = ms.checks.valid() && cover &&
-                          (cd ? !no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, *cover)
-                              : !no_face_joining_parts(mesh, *cover));
+      const bool across = ms.checks.valid() && geometry &&
+                          (cd ? !no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, level_cover())
+                              : !no_face_joining_parts(mesh, level_cover()));
       ms.covering_distance = dl;
       ms.refinements = level.halvings;
       ms.crease_points = creases;
