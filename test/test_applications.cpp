@@ -1340,43 +1340,57 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
   }
 }
 
-TEST_CASE("has_false_short_handle: a tunnel of the mesh narrower than d, the sum's or not", "[applications][mesh]")
+TEST_CASE("has_false_short_handle: a tunnel of the mesh a few d round, the sum's or not", "[applications][mesh]")
 {
   // The block [0, 4]^3 with the tunnel [1.5, 2.5]^2 along z (tunnel_block()) plus the cube of
-  // half-side c: for c = 0.45 the tunnel [1.95, 2.05]^2, 0.1 wide, through the box [-c, 4 + c]^3;
-  // for c = 0.55 it is closed. The mesh: that box with that tunnel (0.4 round, a handle shorter
-  // than d = 1.6), or the box alone.
+  // half-side c: the tunnel [1.5 + c, 2.5 - c]^2 through the box [-c, 4 + c]^3, closed for
+  // c >= 0.5. The meshes: that box with that tunnel, or the box alone. Narrow: c = 0.45, the
+  // tunnel 0.1 wide, 0.4 round, at d = 1.6 (the balls of radius d/2 see it). Wide: c = 0.05,
+  // the tunnel 0.9 wide, 3.6 round, three times d = 1.2 (only the balls of radius 3 d see it).
   using namespace CGAL::Pmsum::internal;
-  const double lo = -0.45, hi = 4.45, in_lo = 1.95, in_hi = 2.05;
-  Soup frame;
-  for (double z : {lo, hi})
-    for (const auto& [a, b] : {std::pair{lo, hi}, std::pair{in_lo, in_hi}})
-      for (const auto& [x, y] : {std::pair{a, a}, std::pair{b, a}, std::pair{b, b}, std::pair{a, b}}) frame.points.push_back({x, y, z});
-  auto outer = [](int k, int z) { return std::size_t(8 * z + k % 4); };
-  auto inner = [](int k, int z) { return std::size_t(8 * z + 4 + k % 4); };
-  auto quad = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
-    frame.triangles.push_back({a, b, c});
-    frame.triangles.push_back({a, c, d});
+  auto tunnel_mesh = [](double c) {
+    const double lo = -c, hi = 4 + c, in_lo = 1.5 + c, in_hi = 2.5 - c;
+    Soup frame;
+    for (double z : {lo, hi})
+      for (const auto& [a, b] : {std::pair{lo, hi}, std::pair{in_lo, in_hi}})
+        for (const auto& [x, y] : {std::pair{a, a}, std::pair{b, a}, std::pair{b, b}, std::pair{a, b}}) frame.points.push_back({x, y, z});
+    auto outer = [](int k, int z) { return std::size_t(8 * z + k % 4); };
+    auto inner = [](int k, int z) { return std::size_t(8 * z + 4 + k % 4); };
+    auto quad = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+      frame.triangles.push_back({a, b, c});
+      frame.triangles.push_back({a, c, d});
+    };
+    for (int k = 0; k < 4; ++k) {
+      quad(outer(k, 1), outer(k + 1, 1), inner(k + 1, 1), inner(k, 1)); // top, facing up
+      quad(outer(k + 1, 0), outer(k, 0), inner(k, 0), inner(k + 1, 0)); // bottom
+      quad(outer(k, 0), outer(k + 1, 0), outer(k + 1, 1), outer(k, 1)); // sides, facing out
+      quad(inner(k + 1, 0), inner(k, 0), inner(k, 1), inner(k + 1, 1)); // the tunnel's, facing into it
+    }
+    return to_mesh<Mesh>(subdivided(frame, 3));
   };
-  for (int k = 0; k < 4; ++k) {
-    quad(outer(k, 1), outer(k + 1, 1), inner(k + 1, 1), inner(k, 1)); // top, facing up
-    quad(outer(k + 1, 0), outer(k, 0), inner(k, 0), inner(k + 1, 0)); // bottom
-    quad(outer(k, 0), outer(k + 1, 0), outer(k + 1, 1), outer(k, 1)); // sides, facing out
-    quad(inner(k + 1, 0), inner(k, 0), inner(k, 1), inner(k + 1, 1)); // the tunnel's, facing into it
-  }
-  const Mesh tunnel = to_mesh<Mesh>(subdivided(frame, 3)), solid = to_mesh<Mesh>(subdivided(box({lo, lo, lo}, {hi, hi, hi}), 3));
-  REQUIRE(CGAL::Pmsum::check_mesh(tunnel).valid());
-  REQUIRE(CGAL::Pmsum::check_mesh(tunnel).euler_characteristic == 0);
-  struct Case { const char* what; double c; const Mesh& mesh; bool false_handle; };
-  for (const Case& k : {Case{"the tunnel, the sum's", 0.45, tunnel, false}, Case{"the tunnel, closed in the sum", 0.55, tunnel, true},
-                        Case{"no tunnel", 0.45, solid, false}}) {
+  auto box_mesh = [](double c) { return to_mesh<Mesh>(subdivided(box({-c, -c, -c}, {4 + c, 4 + c, 4 + c}), 3)); };
+  struct Case { const char* what; Mesh mesh; double c, d; bool false_handle; };
+  for (const Case& k : {Case{"narrow: the tunnel, the sum's", tunnel_mesh(0.45), 0.45, 1.6, false},
+                        Case{"narrow: the tunnel, closed in the sum", tunnel_mesh(0.45), 0.55, 1.6, true},
+                        Case{"narrow: no tunnel", box_mesh(0.45), 0.45, 1.6, false},
+                        Case{"wide: the tunnel, the sum's", tunnel_mesh(0.05), 0.05, 1.2, false},
+                        Case{"wide: the tunnel, closed in the sum", tunnel_mesh(0.05), 0.55, 1.2, true},
+                        Case{"wide: no tunnel", box_mesh(0.05), 0.05, 1.2, false}}) {
     INFO(k.what);
+    REQUIRE(CGAL::Pmsum::check_mesh(k.mesh).valid());
     const auto operands = cd_operands(box({-k.c, -k.c, -k.c}, {k.c, k.c, k.c}), pmsum_shapes::tunnel_block());
     const Cd_geometry geometry(operands.first, operands.second);
     Cd_filter filter(&geometry);
     Segment_search search(filter);
-    CHECK(has_false_short_handle(k.mesh, 1.6, search) == k.false_handle);
+    CHECK(has_false_short_handle(k.mesh, k.d, search, false) == k.false_handle);
+    CHECK(has_false_short_handle(k.mesh, k.d, search, true) == k.false_handle); // (the balls on TBB's threads)
   }
+  // The wide tunnel is not seen by the narrow balls alone: at d = 0.4 (radius 3 d = 1.2 < 1.8).
+  const auto operands = cd_operands(box({-0.55, -0.55, -0.55}, {0.55, 0.55, 0.55}), pmsum_shapes::tunnel_block());
+  const Cd_geometry geometry(operands.first, operands.second);
+  Cd_filter filter(&geometry);
+  Segment_search search(filter);
+  CHECK_FALSE(has_false_short_handle(tunnel_mesh(0.05), 0.4, search, false));
 }
 
 TEST_CASE("mesh of a grate with its axes permuted: no second sheet, the sum's Euler characteristic", "[applications][mesh]")

@@ -162,8 +162,8 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), no void the sum does not have
-/// (has_false_void()), no second sheet (has_second_sheet()), no handle narrower than d that the sum
-/// is not shown to have (has_false_short_handle()), the points' distance to the mesh and the
+/// (has_false_void()), no second sheet (has_second_sheet()), no handle narrower than d nor
+/// handle or neck a few d round that the sum is not shown to have (has_false_short_handle()), the points' distance to the mesh and the
 /// mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
 /// with the trim curves searched wherever they are (not only where the covering needs them),
 /// then d is halved, twice at most, at d/2 first with the points on sharp creases kept, then
@@ -277,8 +277,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
           refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
         else if (has_second_sheet(mesh, dl, search, pipeline.parallel))
           refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
-        else if (has_false_short_handle(mesh, dl, search))
-          refuted = "made a handle narrower than that d that the sum is not shown to have";
+        else if (has_false_short_handle(mesh, dl, search, pipeline.parallel))
+          refuted = "made a handle or a neck a few times that d round that the sum is not shown to have";
       }
       ms.seconds_mesh += seconds_since(t_way); // (the checks included)
       if (passed && !refuted) {
