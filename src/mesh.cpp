@@ -50,7 +50,7 @@ Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
     .integer("shells", c.shells).integer("void_shells", c.void_shells).add("euler_characteristic", std::to_string(c.euler_characteristic)).num("point_distance", ms.point_distance)
     .integer("points_put_back", ms.points_put_back)
     .num("mesh_to_boundary_bound", ms.mesh_to_boundary_bound)
-    .num("boundary_to_mesh_bound", ms.boundary_to_mesh_bound());
+    .num("boundary_to_mesh_bound", ms.boundary_to_mesh_bound()).str("refused", ms.refused);
   return j;
 }
 
@@ -152,9 +152,11 @@ int command_mesh(int argc, char** argv)
     j.str("command", "mesh").str("output", out_path).object("mesh", mesh_summary(ms)).object("seconds", seconds);
     write_json(files["--json"], j);
   }
-  if (!in.quiet)
+  if (!in.quiet) {
+    if (!ms.refused.empty()) std::cerr << "pmsum: note: refused first: " << ms.refused << "\n";
     std::cerr << "pmsum: " << mesh_note(ms) << " written to " << out_path << " (" << std::setprecision(3)
               << seconds_since(t_start) << " s)\n";
+  }
   return 0;
 }
 

@@ -594,6 +594,7 @@ TEST_CASE("mesh of a sum: valid, vertices exactly on the boundary, within d of i
   REQUIRE(c.valid());
   CHECK(c.shells == 1);
   CHECK(ms.checks.valid());
+  CHECK(ms.refused.empty() == (!ms.by_planes && ms.refinements == 0 && ms.covering_distance == d)); // (the first mesh taken)
   CHECK(ms.vertices == vertices(m).size());
   CHECK(ms.triangles == faces(m).size());
   CHECK(ms.sum.output_points >= ms.vertices); // the vertices are the sum's points
@@ -1517,6 +1518,7 @@ TEST_CASE("mesh of a narrow tunnel, in its axes and turned: plane by plane, the 
     REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
     CHECK(ms.by_planes);
     CHECK(ms.refinements == 0);
+    CHECK(ms.refused.find("by the advancing front") != std::string::npos); // (why the first mesh was not taken)
     CHECK(ms.checks.shells == 1u);
     CHECK(ms.point_distance < ms.covering_distance);
     const long euler = long(vertices(m).size()) - long(edges(m).size()) + long(faces(m).size());

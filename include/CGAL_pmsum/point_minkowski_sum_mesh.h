@@ -73,6 +73,9 @@ struct Mesh_statistics
   double boundary_to_mesh_bound() const { return covering_distance + point_distance; }
   double seconds_sum = 0;      ///< all runs of the sum
   double seconds_mesh = 0;     ///< all reconstructions and checks
+  /// why the meshes made before the one returned were refused, way by way and level by level
+  /// (empty if the advancing front's first mesh was taken)
+  std::string refused;
 };
 
 namespace internal {
@@ -285,6 +288,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         ms.vertices = vertices(mesh).size(); // num_vertices() may count removed elements
         ms.triangles = faces(mesh).size();
         ms.by_planes = way == 1;
+        ms.refused = failures;
         return;
       }
       failures += std::string(failures.empty() ? "the reconstruction at d = " : "; at d = ") + std::to_string(dl) +
