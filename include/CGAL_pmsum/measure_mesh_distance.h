@@ -63,9 +63,26 @@ public:
   bool empty() const { return m_triangles.empty(); }
   /// @pre !empty()
   double squared_distance(const K::Point_3& x) const { return m_tree.squared_distance(x); }
-  /// The index (in the shells' order) of a triangle nearest to x. @pre !empty()
+  /// The index (in the shells' order) of the first triangle nearest to x (the tree's answer
+  /// among equally near ones varies from run to run). @pre !empty()
   std::size_t nearest(const K::Point_3& x) const
-  { return std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin()); }
+  {
+    const double r = std::sqrt(m_tree.squared_distance(x)) * (1 + 1e-9) + std::numeric_limits<double>::min();
+    std::vector<Triangles::const_iterator> near;
+    m_tree.all_intersected_primitives(CGAL::Bbox_3(x.x() - r, x.y() - r, x.z() - r, x.x() + r, x.y() + r, x.z() + r),
+                                      std::back_inserter(near));
+    std::size_t best = m_triangles.size();
+    double best_squared = std::numeric_limits<double>::infinity();
+    for (const auto& t : near) {
+      const double squared = CGAL::squared_distance(x, *t);
+      const std::size_t i = std::size_t(t - m_triangles.cbegin());
+      if (squared < best_squared || (squared == best_squared && i < best)) {
+        best_squared = squared;
+        best = i;
+      }
+    }
+    return best < m_triangles.size() ? best : std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin());
+  }
   /// Calls f(i) with the index (in the shells' order) of each triangle that s meets, except
   /// those for which skip(i) is true: they are not tested (a triangle known to touch s only at
   /// its source, whose exact test would be degenerate). @pre !empty()
