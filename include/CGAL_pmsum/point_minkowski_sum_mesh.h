@@ -166,8 +166,8 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), no void the sum does not have
 /// (has_false_void()), no second sheet (has_second_sheet()), no handle narrower than d nor
-/// handle or neck a few d round that the sum is not shown to have (has_false_short_handle()), the points' distance to the mesh and the
-/// mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
+/// handle or neck a few d round that the sum is not shown to have (has_false_short_handle()),
+/// the points' distance to the mesh and the mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
 /// with the trim curves searched wherever they are (not only where the covering needs them),
 /// then d is halved, twice at most, at d/2 first with the points on sharp creases kept, then
 /// without, at d/4 without them, then with (see `levels`), reusing the coarser decisions; then
