@@ -461,7 +461,7 @@ TEST_CASE("crossing ranges agree with the exact pair tests along segments", "[fi
 TEST_CASE("convex planar patches: a box's faces are one patch each, and their crossing sets are collisions", "[filters][islands]")
 {
   // The island search drops a piece of a cell when one pair of convex planar patches
-  // (convex_patches.h) certainly crosses on all of it. Check the patches of boxes, and that
+  // (convex_patches.h) certainly crosses on all of it, the trim search a whole cell. Check the patches of boxes, and that
   // the small triangles of translations that a patch pair's slabs put inside its crossing
   // set are collisions (exact tests at 15 points of each), including those that no pair of
   // their triangles' slabs holds whole (across the diagonals).
@@ -494,10 +494,11 @@ TEST_CASE("convex planar patches: a box's faces are one patch each, and their cr
     }
   }
   CGAL::Random rng(5);
-  std::size_t inside = 0, by_patches_only = 0;
+  std::size_t inside = 0, by_patches_only = 0, by_witness = 0;
   for (const auto& [ps, qs] : cases) {
     Cd_case cd(ps, qs);
     Cd_filter& filter = cd.filter;
+    Segment_search search(filter);
     for (int k = 0; k < 400; ++k) {
       // a small triangle T of translations, corners t_i
       std::array<std::array<double, 3>, 3> t;
@@ -525,6 +526,15 @@ TEST_CASE("convex planar patches: a box's faces are one patch each, and their cr
         patches_inside = patches_inside || holds;
         only_patches = only_patches || (holds && !triangles);
       }
+      // The trim search's skip (Segment_search::patch_pair_covers()): with the scan, exactly
+      // when a patch pair holds T; with a corner's witness alone (and the recent pairs), only then.
+      CHECK(search.patch_pair_covers(T, {}, true) == patches_inside);
+      const bool corner_free = filter.is_free_at(t[0]);
+      const auto witness = corner_free ? std::nullopt : filter.last_crossing();
+      if (search.patch_pair_covers(T, {witness, std::nullopt, std::nullopt}, false)) {
+        CHECK(patches_inside);
+        ++by_witness;
+      }
       if (!patches_inside) continue;
       for (double a = 0; a <= 1; a += 0.25)
         for (double b = 0; a + b <= 1; b += 0.25) {
@@ -538,9 +548,10 @@ TEST_CASE("convex planar patches: a box's faces are one patch each, and their cr
     }
   }
   INFO(inside << " triangles of translations inside a patch pair's crossing set, " << by_patches_only
-              << " in no pair of their triangles'");
+              << " in no pair of their triangles', " << by_witness << " found without the scan");
   CHECK(inside > 100);
   CHECK(by_patches_only > 10);
+  CHECK(by_witness > 10);
 }
 
 TEST_CASE("on a small grid, double arithmetic decides the predicates as exact arithmetic does", "[filters][exact]")

@@ -123,6 +123,7 @@ public:
     for (int k = 0; k < 3; ++k) whole.e[k] = m_e[k] = enclosure(T[k]);
     m_pairs.clear();
     m_cell_patches.clear();
+    m_met.clear();
     // Neighbouring cells are often covered by the same patch pair: the last ones that did first.
     for (const auto& pair : m_recent_covers)
       if (pair && crossing_slabs(*pair, whole.e).second == Where::inside) return {};
@@ -145,15 +146,17 @@ public:
           m_pairs.push_back({std::move(slabs), {}});
         }
       }
-      // The item pair's lines are searched only if its own crossing set's border may cross T.
-      if (it->second == no_index) return false;
-      Cell_pair& cell_pair = m_pairs[it->second];
-      Plane_pair& plane = on_plane({u, v});
-      if (!cell_pair.slabs.known || pair_where({u, v}, plane, whole.e) == Where::border)
-        cell_pair.members.push_back({{u, v}, &plane});
+      if (it->second != no_index) m_met.push_back({{u, v}, it->second});
       return false;
     });
     if (covered || m_pairs.empty()) return {};
+    // The item pairs' lines are searched only where their own crossing sets' borders may
+    // cross T (asked only now: most cells are covered, and the plane's answer costs).
+    for (const auto& [pair, k] : m_met) {
+      Plane_pair& plane = on_plane(pair);
+      if (!m_pairs[k].slabs.known || pair_where(pair, plane, whole.e) == Where::border)
+        m_pairs[k].members.push_back({pair, &plane});
+    }
     std::vector<std::uint32_t> border(m_pairs.size()); // of m_pairs: those whose crossing sets' borders may cross T
     std::iota(border.begin(), border.end(), 0);
     m_T = T; // over a common denominator: the sub-cells' corners are integer combinations
@@ -550,6 +553,7 @@ private:
   std::array<Vec3<Interval>, 3> m_e;       // and their enclosures
   std::vector<Cell_pair> m_pairs;          // whose crossing sets' borders may cross the current cell
   std::unordered_map<std::uint64_t, Plane_pair> m_on_plane; // of the pairs met in the current facet
+  std::vector<std::pair<Pair, Index>> m_met; // the item pairs met in the current cell, with their patch pair's index in m_pairs
   std::unordered_map<std::uint64_t, Index> m_cell_patches; // patch pairs met in the current cell: their index in m_pairs, or no_index
   std::array<std::optional<Pair>, 4> m_recent_covers; // the last patch pairs that covered a cell
   std::size_t m_next_recent = 0;

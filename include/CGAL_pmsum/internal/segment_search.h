@@ -52,6 +52,7 @@
 #include <map>
 #include <optional>
 #include <type_traits>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -159,6 +160,40 @@ public:
 
   /// Number of segments searched.
   std::size_t searched_segments() const { return m_segments; }
+
+  /// Does one patch pair's crossing set (Cd_filter::patch_crossing_slabs()) hold all of the
+  /// triangle of translations e (boxes holding its corners), with a margin (intervals)? Then
+  /// every point of it, perturbed or not, is a collision: a segment there has no free part, a
+  /// lattice cell no island. The patch pairs tried: the last ones that held a triangle
+  /// (neighbours are often held by the same), those of the item pairs `witnesses` (known to
+  /// cross at its corners), and with `scan`, every patch pair whose items' boxes overlap on e
+  /// (a traversal, as a CD query's). On their slabs alone: what the facet's plane tells of a
+  /// pair (coplanar faces) is not asked. Whatever the pairs tried before, the scan answers
+  /// the same: the output never depends on it, only the work.
+  bool patch_pair_covers(const std::array<Vec3<Interval>, 3>& e,
+                         const std::array<std::optional<std::pair<Index, Index>>, 3>& witnesses, bool scan)
+  {
+    auto holds = [&](const std::pair<Index, Index>& patches) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      if (m_filter.patch_crossing_slabs(patches.first, patches.second, e).second != Crossing_slabs::Where::inside)
+        return false;
+      if (std::find(m_recent_covers.begin(), m_recent_covers.end(), patches) == m_recent_covers.end())
+        m_recent_covers[m_next_recent++ % m_recent_covers.size()] = patches;
+      return true;
+    };
+    for (const auto& patches : m_recent_covers)
+      if (patches && holds(*patches)) return true;
+    for (const auto& w : witnesses)
+      if (w && holds({m_filter.moving_patch(w->first), m_filter.static_patch(w->second)})) return true;
+    if (!scan) return false;
+    m_patches_met.clear();
+    bool covered = false;
+    m_filter.for_each_overlapping_pair(hull(hull(e[0], e[1]), e[2]), [&](Index u, Index v) {
+      const std::pair<Index, Index> patches(m_filter.moving_patch(u), m_filter.static_patch(v));
+      return m_patches_met.insert(pair_key(patches.first, patches.second)).second && (covered = holds(patches));
+    });
+    return covered;
+  }
 
   /// Appends to `ends` the parameters of the ends of the free parts of s (sorted, each free
   /// part giving its first and last parameter, equal for an isolated free point). Points are
@@ -515,6 +550,9 @@ private:
   std::vector<std::pair<Index, Index>> m_pairs;
   std::vector<Crossing_range> m_ranges;
   std::optional<std::pair<Index, Index>> m_last_quick; // the pair of the last quick exit
+  std::array<std::optional<std::pair<Index, Index>>, 2> m_recent_covers; // the last patch pairs that held a triangle (patch_pair_covers())
+  std::size_t m_next_recent = 0;
+  std::unordered_set<std::uint64_t> m_patches_met; // (patch_pair_covers())
   std::optional<std::pair<Exact_point, Exact_point>> m_roots_of;                 // the segment of m_roots
   std::map<std::pair<Index, Index>, std::vector<Segment_parameter>> m_roots; // cached_roots()
 };
