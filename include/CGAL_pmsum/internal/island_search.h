@@ -19,7 +19,8 @@
 //
 // Only cells that need it are searched: one with a corner inside the sum and no end of a
 // free interval on its edges (else those ends are in T and closer than diam(T) to its
-// islands), that is not certified inside the sum, that the output points do not cover whole
+// islands), that is not certified inside the sum, nor inside one patch pair's crossing set
+// (below; the trim search leaves those out: trim_points.h), that the output points do not cover whole
 // (searched after the level's other points are chosen: decision.h, decide_islands; on the
 // rotated narrow tunnel at d = 4%, 152 cells left of 841), and that no single item pair covers
 // with a margin (intervals show T inside the pair's open crossing set, a convex set:

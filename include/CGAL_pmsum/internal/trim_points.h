@@ -22,7 +22,10 @@
 // the two surfaces (Segment_search::patch_pair_covers(); the pairs of its corners' witnesses,
 // and for a cell with every corner inside, all pairs met), or shown so by the interior
 // certificate. (At coarse d most cells with a corner inside are such: frame + knot at 5%,
-// one thread, 5.9 -> 1.8 s, the segments searched 88k -> 1.5k, the same points.) A cell whose corners are
+// one thread, 5.9 -> 1.8 s, the segments searched 88k -> 1.5k, the same points. Such a skip
+// changes no cell's answer, but the island waves are split by the cells left, pipeline.h, so
+// the net a later island cell is checked against, and which island points are kept, may
+// differ: a covering either way, the same on any number of threads or ranks.) A cell whose corners are
 // all free or covered needs nothing: its points are within f(T) <= d/2 of a corner, and
 // that corner within d/2 of an output point. Nor does a cell whose three corners are closer
 // than d to one output point already chosen (of an earlier wave: decision.h): a ball is
@@ -336,9 +339,9 @@ private:
   double m_diameter = 0;
 };
 
-/// Which cells the trim search searches: where the covering needs it (cells with a corner
-/// known inside that no output point covers whole); every cell with a corner known inside (a
-/// mesh needs the trim curves around a hole in a face narrower than d, which the points
+/// Which cells the trim search searches (none inside the sum whole: see select_cells()):
+/// where the covering needs it (cells with a corner known inside that no output point covers
+/// whole); every cell with a corner known inside (a mesh needs the trim curves around a hole in a face narrower than d, which the points
 /// around it cover); or also, following each strip of a facet narrower than d/2, the cells
 /// with an untested corner, to the strip's ends (a mesh needs both edges' rows to where the
 /// strip meets another face; more points, and more searched segments, on sums with many
@@ -559,11 +562,11 @@ private:
       if (c.status == Corner::free) return false;
       if (c.status == Corner::inside) witnesses[k] = c.witness;
     }
-    return m_search.patch_pair_covers({enclosure(cell[0]), enclosure(cell[1]), enclosure(cell[2])}, witnesses, scan);
+    return m_search.patch_pair_covers({box_of(cell[0]), box_of(cell[1]), box_of(cell[2])}, witnesses, scan);
   }
 
   /// A box holding lattice point k (intervals: cheaper than the exact point).
-  Vec3<Interval> enclosure(std::uint32_t k) const
+  Vec3<Interval> box_of(std::uint32_t k) const
   {
     CGAL::Protect_FPU_rounding<true> guard;
     Vec3<Interval> e;
@@ -653,7 +656,8 @@ private:
 /// caller's choice: with Strips::as_covering_needs only); a segment or a cell when
 /// `certified(lo, hi, ball)` tells that its bounding box is inside the sum (by octree leaves;
 /// `ball`: also by the certificate's balls, costlier, for cells and for segments between two
-/// certified leaves), or a segment's ends lie in one certified octree leaf.
+/// certified leaves), or a segment's ends lie in one certified octree leaf; a cell when one
+/// patch pair certainly crosses on all of it (`search`'s Segment_search::patch_pair_covers()).
 template <class CornerInfo, class Certified, class Covered>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
