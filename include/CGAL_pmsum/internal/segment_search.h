@@ -168,8 +168,8 @@ public:
   /// (neighbours are often held by the same), those of the item pairs `witnesses` (known to
   /// cross at its corners), and with `scan`, every patch pair whose items' boxes overlap on e
   /// (a traversal, as a CD query's). On their slabs alone: what the facet's plane tells of a
-  /// pair (coplanar faces) is not asked. Whatever the pairs tried before, the scan answers
-  /// the same: the output never depends on it, only the work.
+  /// pair (coplanar faces) is not asked. With the scan, the answer does not depend on the
+  /// pairs tried before; without it, a pair missed only costs work.
   bool patch_pair_covers(const std::array<Vec3<Interval>, 3>& e,
                          const std::array<std::optional<std::pair<Index, Index>>, 3>& witnesses, bool scan)
   {

@@ -341,11 +341,11 @@ private:
 
 /// Which cells the trim search searches (none inside the sum whole: see select_cells()):
 /// where the covering needs it (cells with a corner known inside that no output point covers
-/// whole); every cell with a corner known inside (a mesh needs the trim curves around a hole in a face narrower than d, which the points
-/// around it cover); or also, following each strip of a facet narrower than d/2, the cells
-/// with an untested corner, to the strip's ends (a mesh needs both edges' rows to where the
-/// strip meets another face; more points, and more searched segments, on sums with many
-/// narrow strips).
+/// whole); every cell with a corner known inside (a mesh needs the trim curves around a hole
+/// in a face narrower than d, which the points around it cover); or also, following each
+/// strip of a facet narrower than d/2, the cells with an untested corner, to the strip's ends
+/// (a mesh needs both edges' rows to where the strip meets another face; more points, and
+/// more searched segments, on sums with many narrow strips).
 enum class Strips : std::uint8_t { as_covering_needs, inside_corners, followed };
 
 /// The point of lattice point a plus trim (exact weights) of pair fp, with its origins and
