@@ -410,7 +410,7 @@ public:
       for (std::uint32_t c : cell) inside += m_corner(c).status == Corner::inside;
       if (inside > 0 && covered_by_one_patch_pair(cell, false)) continue;
       if (inside == 3) {
-        if (certified({cell[0], cell[1], cell[2]}, true) || covered_by_one_patch_pair(cell, true)) continue;
+        if (certified({cell[0], cell[1], cell[2]}, true) || covered_by_one_patch_pair(cell, scan_now())) continue;
         m_uncertified_cell[i] = true;
       }
       if (inside > 0) search_cell(i);
@@ -550,6 +550,29 @@ private:
     return *m_rounded[k];
   }
 
+  /// Is a scan of every patch pair met (covered_by_one_patch_pair()) worth its cost for the
+  /// next cell with every corner inside? Where the scans keep failing (coplanar faces: the
+  /// crossing sets of single patch pairs leave their common plane undecided, the islands'
+  /// search settles it), they are put off: after 4 failures in a row, the next n - 3 cells
+  /// are not scanned (n failures in a row, at most 32 cells); a scan that succeeds resets
+  /// the count. A cell not scanned only costs work (its island search), and what is put off
+  /// depends on the cells' order alone: the same on any thread or rank.
+  bool scan_now()
+  {
+    if (m_scans_put_off > 0) {
+      --m_scans_put_off;
+      return false;
+    }
+    return true;
+  }
+
+  /// Records whether a scan (scan_now()) found a covering patch pair.
+  void scanned(bool covered)
+  {
+    m_scan_failures = covered ? 0 : m_scan_failures + 1;
+    if (m_scan_failures >= 4) m_scans_put_off = (std::min)(m_scan_failures - 3, 32u);
+  }
+
   /// Is the cell (no corner free) inside the crossing set of one patch pair
   /// (Segment_search::patch_pair_covers(): with its corners' witnesses, and with `scan` every
   /// pair met)? Then it is inside the sum whole: neither its segments nor its islands have a
@@ -562,7 +585,9 @@ private:
       if (c.status == Corner::free) return false;
       if (c.status == Corner::inside) witnesses[k] = c.witness;
     }
-    return m_search.patch_pair_covers({box_of(cell[0]), box_of(cell[1]), box_of(cell[2])}, witnesses, scan);
+    const bool covered = m_search.patch_pair_covers({box_of(cell[0]), box_of(cell[1]), box_of(cell[2])}, witnesses, scan);
+    if (scan) scanned(covered);
+    return covered;
   }
 
   /// A box holding lattice point k (intervals: cheaper than the exact point).
@@ -639,6 +664,8 @@ private:
   std::vector<std::size_t> m_cells;                    // selected, in order
   std::vector<bool> m_searched_cell;                   // selected?
   std::vector<bool> m_uncertified_cell;                // its whole-cell test failed (select_cells())?
+  std::uint32_t m_scan_failures = 0;                   // scans that failed in a row (scan_now())
+  std::uint32_t m_scans_put_off = 0;                   // cells left to skip the scan on
   std::map<Segment, Segment_info> m_segments;          // of the selected cells, each once
   std::vector<Segment> m_to_search;                    // in the order searched
   std::map<Segment, std::array<std::uint32_t, 2>> m_cells_of; // (follow())
