@@ -104,27 +104,41 @@ struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
   const std::vector<Vector>* normals;
-  double d; // the covering distance of the points
+  double d;  // the covering distance of the points
+  bool flat; // are the points coplanar (CGAL then adds a vertex)?
 
   template <class AdvancingFront, class Cell_handle>
   double operator()(const AdvancingFront& adv, Cell_handle& c, const int& index) const
   {
     const double cos_max_angle = 0.17364817766693; // cos(80 degrees)
-    const double radius = adv.smallest_radius_delaunay_sphere(c, index);
-    if (radius == std::numeric_limits<double>::infinity()) return radius; // (and a vertex may have no id)
-    std::array<Vector, 3> n;
+    const double infinity = std::numeric_limits<double>::infinity();
     std::array<typename Cell_handle::value_type::Vertex_handle, 3> v;
-    for (int k = 0; k < 3; ++k) {
-      v[k] = c->vertex((index + k + 1) & 3);
-      n[k] = (*normals)[v[k]->id()];
-    }
+    for (int k = 0; k < 3; ++k) v[k] = c->vertex((index + k + 1) & 3);
+    // The radius is costly: it is computed only for a triangle that the tests below accept
+    // (most Delaunay facets are refused), but first where a vertex may have no id (its
+    // radius is infinite there: the infinite vertex, the vertex CGAL adds to a flat point
+    // set). The same priorities either way; asked again below, the radius is CGAL's cached one.
+    const auto& dt = adv.triangulation_3();
+    if ((flat || dt.is_infinite(v[0]) || dt.is_infinite(v[1]) || dt.is_infinite(v[2])) &&
+        adv.smallest_radius_delaunay_sphere(c, index) == infinity)
+      return infinity;
+    std::array<Vector, 3> n;
+    for (int k = 0; k < 3; ++k) n[k] = (*normals)[v[k]->id()];
     auto at = [&](int k) { return std::array<double, 3>{v[k]->point().x(), v[k]->point().y(), v[k]->point().z()}; };
-    if (corner_covering_radius(at(0), at(1), at(2)) >= d) return std::numeric_limits<double>::infinity();
+    if (corner_covering_radius(at(0), at(1), at(2)) >= d) return infinity;
     Vector t = CGAL::cross_product(v[1]->point() - v[0]->point(), v[2]->point() - v[0]->point());
     if (t * (n[0] + n[1] + n[2]) < 0) t = -t;
     const double length = std::sqrt(t.squared_length());
     for (const Vector& nk : n)
-      if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return std::numeric_limits<double>::infinity();
+      if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return infinity;
+    const double radius = adv.smallest_radius_delaunay_sphere(c, index);
+    return radius == infinity ? radius : scaled_radius(radius, v);
+  }
+
+  /// The radius scaled by 1 + 2^-40 h, h a hash of the triangle's vertices (see above).
+  template <class Vertex_handle>
+  static double scaled_radius(double radius, const std::array<Vertex_handle, 3>& v)
+  {
     std::array<std::uint64_t, 3> id = {std::uint64_t(v[0]->id()), std::uint64_t(v[1]->id()), std::uint64_t(v[2]->id())};
     std::sort(id.begin(), id.end());
     std::uint64_t h = 0x9E3779B97F4A7C15ull;
@@ -252,6 +266,17 @@ std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> double
   return positions;
 }
 
+/// Do the points lie in one plane (or fewer dimensions)? Exact predicates.
+inline bool coplanar_points(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& points)
+{
+  const auto a = points.begin(), end = points.end();
+  if (a == end) return true;
+  const auto b = std::find_if(a, end, [&](const auto& p) { return p != *a; });
+  if (b == end) return true;
+  const auto c = std::find_if(b, end, [&](const auto& p) { return !CGAL::collinear(*a, *b, p); });
+  return c == end || std::all_of(c, end, [&](const auto& p) { return CGAL::coplanar(*a, *b, *c, p); });
+}
+
 /// The triangles that CGAL's advancing front makes of `positions` (a d-covering), chosen by
 /// their unit outward `normals` (Normal_consistent_priority).
 inline std::vector<std::array<std::size_t, 3>>
@@ -260,9 +285,10 @@ advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_const
                           double d)
 {
   std::vector<std::array<std::size_t, 3>> triangles;
+  const bool flat = coplanar_points(positions);
   on_own_thread([&] {
     CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
-                                                 Normal_consistent_priority{&normals, d});
+                                                 Normal_consistent_priority{&normals, d, flat});
   });
   return triangles;
 }
