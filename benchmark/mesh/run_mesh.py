@@ -28,6 +28,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 RESULTS = os.path.join(HERE, "results")
+PICTURES = "Pictures: `NAME.png` (the mesh beside Nef's boundary)."  # (the notes follow it in results.md)
 sys.path.insert(0, os.path.join(ROOT, "benchmark", "validation"))
 sys.path.insert(0, os.path.join(ROOT, "benchmark", "speed"))
 from run_suite import OPEN, SUITE, shape_path  # noqa: E402
@@ -143,7 +144,14 @@ def main():
         if name in args.pictures and report["mesh"]["made"]:
             picture(mesh_off, exact_off, os.path.join(RESULTS, name + ".png"), name)
 
-    with open(os.path.join(RESULTS, "results.md"), "w") as out:
+    # The notes written after the table (what each run measured) are kept.
+    results_md = os.path.join(RESULTS, "results.md")
+    notes = ""
+    if os.path.exists(results_md):
+        text = open(results_md).read()
+        if PICTURES in text:
+            notes = text.split(PICTURES, 1)[1]
+    with open(results_md, "w") as out:
         out.write("# Meshes of the sum: `pmsum validate --mesh` on the validation suite\n\n"
                   "Default settings, 2 threads, this machine (2 cores). d is a fraction of the diagonal of the sum's "
                   "bounding box; d used: after refinements (the mesh halves d when a check fails, twice at most). "
@@ -188,8 +196,8 @@ def main():
                       f"{bound('boundary_to_mesh_bound')} | {s['mesh_sum']:.2f} | {s['mesh_reconstruction']:.2f} | "
                       f"{s['mesh']:.2f} | {nef:.2f} | {nef / s['mesh'] if s['mesh'] > 0 else 0:.3g} | "
                       f"{man_cols} | {'yes' if m['ok'] else 'no'} |\n")
-        out.write("\nPictures: `NAME.png` (the mesh beside Nef's boundary).\n")
-    print("wrote", os.path.join(RESULTS, "results.md"))
+        out.write("\n" + PICTURES + (notes if notes else "\n"))
+    print("wrote", results_md)
     return 0
 
 
