@@ -20,7 +20,8 @@
 // known to be inside (tested, certified or reused) are searched, but for a cell inside the
 // sum whole (no free point there): inside the crossing set of one pair of convex patches of
 // the two surfaces (Segment_search::patch_pair_covers(); the pairs of its corners' witnesses,
-// and for a cell with every corner inside, all pairs met), or shown so by the interior
+// and for a cell with every corner inside, all pairs met, unless such scans keep failing
+// there: Facet_trim_search::scan_now()), or shown so by the interior
 // certificate. (At coarse d most cells with a corner inside are such: frame + knot at 5%,
 // one thread, 5.9 -> 1.8 s, the segments searched 88k -> 1.5k, the same points. Such a skip
 // changes no cell's answer, but the island waves are split by the cells left, pipeline.h, so
@@ -410,7 +411,9 @@ public:
       for (std::uint32_t c : cell) inside += m_corner(c).status == Corner::inside;
       if (inside > 0 && covered_by_one_patch_pair(cell, false)) continue;
       if (inside == 3) {
-        if (certified({cell[0], cell[1], cell[2]}, true) || covered_by_one_patch_pair(cell, scan_now())) continue;
+        // (a scan put off: the test above has failed on this cell already)
+        if (certified({cell[0], cell[1], cell[2]}, true) || (scan_now() && covered_by_one_patch_pair(cell, true)))
+          continue;
         m_uncertified_cell[i] = true;
       }
       if (inside > 0) search_cell(i);
