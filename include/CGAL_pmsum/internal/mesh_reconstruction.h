@@ -115,9 +115,13 @@ struct Normal_consistent_priority
     std::array<typename Cell_handle::value_type::Vertex_handle, 3> v;
     for (int k = 0; k < 3; ++k) v[k] = c->vertex((index + k + 1) & 3);
     // The radius is costly: it is computed only for a triangle that the tests below accept
-    // (most Delaunay facets are refused), but first where a vertex may have no id (its
-    // radius is infinite there: the infinite vertex, the vertex CGAL adds to a flat point
-    // set). The same priorities either way; asked again below, the radius is CGAL's cached one.
+    // (most Delaunay facets are refused), but first where a vertex may have no id (the
+    // infinite vertex, the vertex CGAL adds to a flat point set: an infinite radius there
+    // returns before the ids are read, as when it was computed first for every facet;
+    // asked again below, it is CGAL's cached value). The same priorities as then, but that
+    // CGAL caches the radius as computed from the side of the facet that asked first (the
+    // two sides round differently), and the normal test may, within rounding, accept a
+    // triangle from one side only: which side asks first can then differ.
     const auto& dt = adv.triangulation_3();
     if ((flat || dt.is_infinite(v[0]) || dt.is_infinite(v[1]) || dt.is_infinite(v[2])) &&
         adv.smallest_radius_delaunay_sphere(c, index) == infinity)
