@@ -1303,6 +1303,9 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
   // nearer than d to the top (facing up) or to the bottom (facing down) is one, or above S
   // facing up (in free space over the top); not one farther than d, nor one above S facing
   // down, nor a crevice: a wedge of two triangles sharing a side, the upper one facing down.
+  // A small square under S's top met only along its diagonal (by the segment from the top's
+  // vertex (1, 1), on the diagonal's line) is one too: a mesh of lattice points can lay a
+  // second sheet so (l-shape-contact at 7%, benchmark/mesh/hard/README.md).
   using namespace CGAL::Pmsum::internal;
   Soup q = box({0, 0, 0}, {2, 2, 0.4});
   q.append(box({0.1, 0.05, -1.6}, {2.1, 2.05, -0.6}));
@@ -1321,6 +1324,9 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
       for (auto& t : s.triangles) std::swap(t[1], t[2]);
     return s;
   };
+  Soup small; // facing up, its diagonal from (0.9, 0.9) to (1.1, 1.1) under S's vertex (1, 1)
+  small.points = {{0.9, 0.9, 0.45}, {1.1, 0.9, 0.45}, {1.1, 1.1, 0.45}, {0.9, 1.1, 0.45}};
+  small.triangles = {{0, 1, 2}, {0, 2, 3}};
   Soup crevice; // the side x = 1.5, z = 0.45; the upper triangle facing down, the lower one up
   crevice.points = {{1.5, 0.5, 0.45}, {1.5, 1.5, 0.45}, {0.5, 1, 0.5}, {0.5, 1, 0.4}};
   crevice.triangles = {{0, 2, 1}, {0, 1, 3}};
@@ -1331,7 +1337,8 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
                         Case{"a square facing up, 0.2 from the top", square(0.45, true), 0.15, false},
                         Case{"a square above S facing up", square(0.8, true), 1.2, true},
                         Case{"a square above S facing down", square(0.8, false), 1.2, false},
-                        Case{"a crevice", crevice, 1.2, false}}) {
+                        Case{"a crevice", crevice, 1.2, false},
+                        Case{"a small square facing up, met along its diagonal", small, 0.5, true}}) {
     INFO(k.what);
     Soup mesh = boundary;
     mesh.append(k.added);

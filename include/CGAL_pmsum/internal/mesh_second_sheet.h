@@ -23,22 +23,26 @@
 // from v into the mesh (against u) and out of it (along u), each with the triangles it meets
 // in their order along it. A triangle T met, with no corner in v's star (neither v nor a
 // neighbour of v: T is not a triangle of v's own sheet), facing u's way (less than 90 degrees
-// from it), met inside (not on its sides or corners only: there the segment grazes a crease
-// or a corner of the mesh, where triangles facing either way meet; hooks with their axes
-// permuted), at a point q such that the segment from v to q lies wholly inside the sum (into
-// the mesh) or wholly outside it (out of it) (Segment_search, from 2^-20 of the way on: v's
-// position rounded to doubles may lie just off the boundary), is a second sheet over the
-// boundary at v: it faces out as the boundary there does, on the same side of the boundary
-// as the segment; the segment has crossed a triangle facing against u before it, and the
-// space between the two is a pocket on the wrong side of the mesh (its outside inside the
-// solid, or its inside in free space). Unless T shares a side with a triangle facing against
-// u that the segment met before it: the pocket is then a crevice closed along that side, a
-// fold of one sheet (rotated hooks at 3%: a sliver
-// wedge 0.86-0.98 d under a concave crease, in a mesh of the exact Euler characteristic), not
-// a second sheet. Where the mesh has one sheet over each part of the boundary, the triangles
+// from it), met inside, or inside a side whose other triangle faces u's way too (not at a
+// corner, nor on a side between triangles facing either way: there the segment grazes a
+// crease or a corner of the mesh; hooks with their axes permuted), at a point q such that
+// the segment from v to q lies wholly inside the sum (into the mesh) or wholly outside it
+// (out of it) (Segment_search, from 2^-20 of the way on: v's position rounded to doubles may
+// lie just off the boundary), is a second sheet over the boundary at v: it faces out as the
+// boundary there does, on the same side of the boundary as the segment; the segment has
+// crossed a triangle facing against u before it, and the space between the two is a pocket
+// on the wrong side of the mesh (its outside inside the solid, or its inside in free space).
+// Unless T shares a side with a triangle facing against u that the segment met before it:
+// the pocket is then a crevice closed along that side, a fold of one sheet (rotated hooks at
+// 3%: a sliver wedge 0.86-0.98 d under a concave crease, in a mesh of the exact Euler
+// characteristic), not a second sheet. Where the mesh has one sheet over each part of the boundary, the triangles
 // such segments meet face against u (the other side of a part, or of a passage, thinner than
 // d) or lie across the boundary (beyond a gap between parts, or beyond a thin part), which
 // the exact test sees.
+//
+// Crossings through a side count since 2026-12-05: the mesh of l-shape-contact at 7% (points
+// on a regular lattice) had a second sheet of chords inside a convex edge whose every segment
+// met it on a side between two of its triangles or in a star (benchmark/mesh/hard/README.md).
 //
 // Measured (2026-12-04): on the 22 meshes of the mesh table (benchmark/mesh/results) no
 // segment met such a triangle, even before the exact test. On 24 more pairs (rotated or
@@ -99,15 +103,29 @@ struct Vertex_stars
     for (std::size_t f = 0; f < s.triangles.size(); ++f)
       for (std::size_t v : s.triangles[f]) at[filled[v]++] = f;
   }
+
+  /// The triangle of `s` (the shell of these stars) across side i of triangle f, from corner
+  /// i to the next: the other one at that side's first corner with its second (one, if `s` is
+  /// closed and manifold); `s.triangles.size()` if there is none.
+  std::size_t across(const Shell& s, std::size_t f, int i) const
+  {
+    const std::size_t a = s.triangles[f][i], b = s.triangles[f][(i + 1) % 3];
+    for (std::size_t k = start[a]; k < start[a + 1]; ++k) {
+      const auto& t = s.triangles[at[k]];
+      if (at[k] != f && std::count(t.begin(), t.end(), b) > 0) return at[k];
+    }
+    return s.triangles.size();
+  }
 };
 
 /// Does `mesh` (closed, its vertices on the boundary of the sum) have two sheets over one part
 /// of the boundary: does a segment of length `d` from a vertex v along its normal, into the
-/// mesh or out of it, meet inside a triangle that has no corner in v's star, faces v's way and
-/// shares no side with a triangle facing against it met before, at a point q with the segment
-/// from v to q wholly inside the sum (into the mesh) or outside it (out of it) (see the file
-/// comment)? `search`: on the CD filter of the sum. `parallel`: choose the segments on the
-/// threads of TBB (the exact searches then run on this one, in the vertices' order).
+/// mesh or out of it, meet a triangle inside (or inside a side between two such) that has no
+/// corner in v's star, faces v's way and shares no side with a triangle facing against it met
+/// before, at a point q with the segment from v to q wholly inside the sum (into the mesh) or
+/// outside it (out of it) (see the file comment)? `search`: on the CD filter of the sum.
+/// `parallel`: choose the segments on the threads of TBB (the exact searches then run on this
+/// one, in the vertices' order).
 /// @pre no triangle of `mesh` is degenerate in doubles (check_mesh() counts one as a
 ///      self-intersection: the meshes checked here passed it)
 template <class TriangleMesh>
@@ -124,13 +142,22 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
   const auto& at = stars.at;
   using K = Shell_triangle_tree::K;
   const Shell_triangle_tree tree(shells);
-  // Does the line through x and y cross the open triangle t (exact orientations, all of one sign)?
-  auto crosses_inside = [&](const V& x, const V& y, const std::array<std::size_t, 3>& t) {
+  // Does the line through x and y cross triangle f, facing u's way, through the sheet: inside
+  // it (exact orientations, all of one sign), or inside one of its sides where the triangle
+  // across that side faces u's way too (the two then lie like a graph over the line there; a
+  // mesh of points on a regular lattice can put such a side just where the line passes)?
+  auto crosses_sheet = [&](const V& x, const V& y, std::size_t f, const V& u) {
     auto point = [](const V& z) { return K::Point_3(z[0], z[1], z[2]); };
     const K::Point_3 a = point(x), b = point(y);
+    const auto& t = s.triangles[f];
     CGAL::Orientation o[3];
     for (int i = 0; i < 3; ++i) o[i] = CGAL::orientation(a, b, point(s.points[t[i]]), point(s.points[t[(i + 1) % 3]]));
-    return o[0] != CGAL::COPLANAR && o[0] == o[1] && o[1] == o[2];
+    const int zero = int(std::count(o, o + 3, CGAL::COPLANAR));
+    if (zero == 0) return o[0] == o[1] && o[1] == o[2];
+    if (zero != 1) return false; // (through a corner, or in f's plane)
+    const int i = int(std::find(o, o + 3, CGAL::COPLANAR) - o);
+    const std::size_t g = stars.across(s, f, i);
+    return o[(i + 1) % 3] == o[(i + 2) % 3] && g < s.triangles.size() && dot(normal[g], u) > 0;
   };
   auto shares_a_side = [&](std::size_t f, std::size_t g) {
     int common = 0;
@@ -170,7 +197,7 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
           const auto& t = s.triangles[f];
           if (!(dot(normal[f], u) > 0) || !(h > 0) ||
               std::any_of(t.begin(), t.end(), [&](std::size_t c) { return std::count(star.begin(), star.end(), c) > 0; }) ||
-              !crosses_inside(p, end, t))
+              !crosses_sheet(p, end, f, u))
             continue;
           if (std::any_of(met.begin(), met.begin() + k, [&](const auto& e) { // a crevice, folded along that side
                 return dot(normal[e.second], u) < 0 && shares_a_side(e.second, f);

@@ -87,16 +87,8 @@ public:
       m_distance(s.points.size(), std::numeric_limits<double>::infinity()), m_counted(s.points.size(), false),
       m_state(s.triangles.size() + 1, Out) // (the last: no triangle)
   {
-    // The triangle across each side: the other one at its first corner with its second (the
-    // shell is closed and manifold: one).
     for (std::size_t f = 0; f < s.triangles.size(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        const std::size_t a = s.triangles[f][i], b = s.triangles[f][(i + 1) % 3];
-        for_each_triangle_at(a, [&](std::size_t g) {
-          const auto& t = s.triangles[g];
-          if (g != f && std::count(t.begin(), t.end(), b) > 0) m_across[3 * f + i] = g;
-        });
-      }
+      for (int i = 0; i < 3; ++i) m_across[3 * f + i] = stars.across(s, f, i);
   }
 
   /// The Euler characteristic of the component at v of the surface within r of v (1 if it has
