@@ -35,10 +35,10 @@
 // Unless T shares a side with a triangle facing against u that the segment met before it:
 // the pocket is then a crevice closed along that side, a fold of one sheet (rotated hooks at
 // 3%: a sliver wedge 0.86-0.98 d under a concave crease, in a mesh of the exact Euler
-// characteristic), not a second sheet. Where the mesh has one sheet over each part of the boundary, the triangles
-// such segments meet face against u (the other side of a part, or of a passage, thinner than
-// d) or lie across the boundary (beyond a gap between parts, or beyond a thin part), which
-// the exact test sees.
+// characteristic), not a second sheet. Where the mesh has one sheet over each part of the
+// boundary, the triangles such segments meet face against u (the other side of a part, or of
+// a passage, thinner than d) or lie across the boundary (beyond a gap between parts, or
+// beyond a thin part), which the exact test sees.
 //
 // Crossings through a side count since 2026-12-05: the mesh of l-shape-contact at 7% (points
 // on a regular lattice) had a second sheet of chords inside a convex edge whose every segment
