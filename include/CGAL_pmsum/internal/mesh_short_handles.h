@@ -24,9 +24,10 @@
 // its turns about the axis add up to a whole turn: a cycle out along one wall of a groove and
 // back along the other passes every segment below, and does not) and, at every vertex p,
 // with w the way from p to the axis square to it, the segment from p to p + w is free (a
-// tunnel; inside the sum for a rod), and the segment beyond p, from p - w turned by |w| away from p's side of the
-// boundary, to p, is inside the sum (free for a rod), by the exact segment search (from 2^-20
-// of the way on: the rounded vertices may lie just off the boundary). A tunnel of convex cross
+// tunnel; inside the sum for a rod), and the segment beyond p, from p - w turned by |w| away
+// from p's side of the boundary, to p, is inside the sum (free for a rod), by the exact
+// segment search (from 2^-20 of the way on: the rounded vertices may lie just off the
+// boundary). A tunnel of convex cross
 // section through a solid passes: p + w is on its axis, and p - w, turned into the solid, is in
 // the solid; a rod likewise. (Turned: a cycle round a tunnel's mouth lies on the face it opens
 // on, and the segment straight out would run along it.) A ball none of whose cycles goes round
@@ -282,7 +283,8 @@ private:
 
 /// Does the sum have the tube of the mesh that `cycle` goes round (see the file comment)?
 /// `round_a_tunnel`, if given: whether the cycle goes round a tunnel of the mesh (its vertex normals
-/// turn about an axis and point towards it), whatever the answer.
+/// turn about an axis, it winds round that axis, and the normals point towards it), whatever the
+/// answer.
 inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::vector<std::size_t>& cycle,
                          Segment_search& search, bool* round_a_tunnel = nullptr)
 {
