@@ -1562,6 +1562,27 @@ TEST_CASE("mesh of a narrow tunnel, in its axes and turned: plane by plane, the 
   }
 }
 
+TEST_CASE("mesh of the narrow tunnel turned at a coarser d: no void in the tunnel", "[applications][mesh]")
+{
+  // The turned pair of the test above at d = 0.78 (7% of the sum's diagonal). The advancing
+  // front closed the tunnel over both mouths and left a needle of 8 vertices inside it, an
+  // inward shell: two shells (one void) where the sum has one, every other check passed.
+  // has_false_void() tested one segment per vertex of the needle, to the nearest vertex of the
+  // outer shell: on the same wall of the tunnel (its points lie at the same places on both
+  // walls), a segment along a face of the sum, not free. The next nearest, across the tunnel,
+  // is free: the void is refuted, and the points are meshed plane by plane, the tunnel kept.
+  const Mesh P = to_mesh<Mesh>(rotated(tunnel_block()));
+  const Mesh Q = to_mesh<Mesh>(rotated(turned_cube((1 - 1. / 2000) / 1.4, 0.8, 0.6)));
+  Mesh m;
+  CGAL::Pmsum::Mesh_statistics ms;
+  CGAL::point_minkowski_sum_mesh(P, Q, 0.78, m, CGAL::parameters::mesh_statistics(ms));
+  REQUIRE(ms.checks.valid());
+  CHECK(ms.checks.shells == 1u);
+  CHECK(ms.checks.void_shells == 0u);
+  CHECK(ms.checks.euler_characteristic == 0);
+  CHECK(ms.point_distance < ms.covering_distance);
+}
+
 TEST_CASE("Euler characteristic of shells: spheres and a torus; borders and touching solids not compared", "[applications][mesh]")
 {
   using CGAL::Pmsum::Shell;

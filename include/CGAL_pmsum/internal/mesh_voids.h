@@ -20,8 +20,8 @@
 // exact kernel they are rounded to doubles here, which can only hide a refutation: a rounded
 // end inside the sum is not free.)
 // A true void is never refuted; a false one is refuted where a tested segment runs along the
-// passage: for each vertex of V, the nearest vertex of another shell is a candidate, and the
-// nearest candidates are tested first (a few per void).
+// passage: for each vertex of V, its nearest few vertices of another shell are candidates, and
+// the nearest candidates are tested first (a few dozen per void).
 
 #ifndef CGAL_PMSUM_INTERNAL_MESH_VOIDS_H
 #define CGAL_PMSUM_INTERNAL_MESH_VOIDS_H
@@ -66,10 +66,12 @@ inline bool inside_segment(Segment_search& search, const Position& a, const Posi
 
 /// Is a void shell of `mesh` (closed, manifold, without self-intersections, bounding a
 /// volume; its vertices on the boundary of the sum) refuted by a free segment to another
-/// shell (see the file comment)? At most `tests` segments per void, from its vertices
-/// nearest to another shell. `search`: on the CD filter of the sum.
+/// shell (see the file comment)? At most `tests` segments per void, the shortest from its
+/// vertices to their `per_vertex` nearest vertices of another shell. `search`: on the CD
+/// filter of the sum.
 template <class TriangleMesh>
-bool has_false_void(const TriangleMesh& mesh, Segment_search& search, std::size_t tests = 16)
+bool has_false_void(const TriangleMesh& mesh, Segment_search& search, std::size_t tests = 32,
+                    std::size_t per_vertex = 4)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   auto volume_id = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
@@ -93,16 +95,20 @@ bool has_false_void(const TriangleMesh& mesh, Segment_search& search, std::size_
   std::vector<Point_search::K::Point_3> points;
   for (const Position& x : at) points.emplace_back(x[0], x[1], x[2]);
   const Point_search tree(points);
-  // Per void: its vertices' nearest vertices of another shell not inside it (among the 16 nearest).
+  // Per void: for each of its vertices, the nearest few vertices of another shell not inside it
+  // (among its 16 nearest). More than one: the nearest can lie on the same face of the sum as
+  // the void's vertex (a thin channel whose walls carry points at the same places), and a
+  // segment along a face is not free; the next one, across the channel, is.
   std::vector<std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>>> candidates(nesting.size());
   for (std::size_t i = 0; i < at.size(); ++i) {
     if (nesting[shell[i]] % 2 == 0) continue;
     const Point_search::Search nearest(tree.tree, points[i], 16);
+    std::size_t taken = 0;
     for (const auto& [p, squared] : nearest) {
       const std::size_t j = index.at(Position{p.x(), p.y(), p.z()});
       if (shell[j] == shell[i] || std::count(around[shell[j]].begin(), around[shell[j]].end(), shell[i]) > 0) continue;
       candidates[shell[i]].push_back({squared, {i, j}});
-      break;
+      if (++taken == per_vertex) break;
     }
   }
   for (auto& c : candidates) {
