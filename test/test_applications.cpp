@@ -947,13 +947,32 @@ TEST_CASE("insert_left_out_points: points beside the mesh become vertices, one p
   points.emplace_back(0.5, 0.5, -0.02);
   part.insert(part.end(), {0, 0, 0, 1});
   CHECK(largest_distance_to_mesh(points, m) == Approx(0.03).epsilon(1e-6));
-  CHECK(insert_left_out_points<CGAL::Sequential_tag>(points, part, m) == 3);
+  CHECK(insert_left_out_points<CGAL::Sequential_tag>(points, part, 0.1, m) == 3);
   REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
   CHECK(vertices(m).size() == 8 + 3);
   CHECK(faces(m).size() == 12 + 3 * 2);
   CHECK(largest_distance_to_mesh(points, m) == Approx(0.02).epsilon(1e-6)); // the other part's point
-  CHECK(insert_left_out_points<CGAL::Sequential_tag>(points, part, m) == 0);
+  CHECK(insert_left_out_points<CGAL::Sequential_tag>(points, part, 0.1, m) == 0);
   CHECK(CGAL::Polygon_mesh_processing::volume(m) > 1);
+  // With a box of part 1 under the first, 0.05 below it: the point 0.02 under the first box's
+  // bottom is nearer to it (part 0) than to the box of its part (0.03 away), and goes into
+  // that one's top, within reach 0.1; not with reach 0.01.
+  for (const double reach : {0.01, 0.1}) {
+    Mesh two = to_mesh<Mesh>(box({0, 0, 0}, {1, 1, 1}));
+    two.join(to_mesh<Mesh>(box({0, 0, -1.05}, {1, 1, -0.05})));
+    std::vector<IK::Point_3> at;
+    std::vector<std::size_t> of;
+    for (auto v : two.vertices()) {
+      at.push_back(two.point(v));
+      of.push_back(two.point(v).z() < -0.01 ? 1 : 0);
+    }
+    at.emplace_back(0.5, 0.3, -0.02);
+    of.push_back(1);
+    INFO("reach " << reach);
+    CHECK(insert_left_out_points<CGAL::Sequential_tag>(at, of, reach, two) == (reach > 0.05 ? 1u : 0u));
+    REQUIRE(CGAL::Pmsum::check_mesh(two).valid());
+    CHECK(largest_distance_to_mesh(at, two) == Approx(reach > 0.05 ? 0 : 0.02).margin(1e-9));
+  }
 }
 
 TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", "[applications][mesh]")

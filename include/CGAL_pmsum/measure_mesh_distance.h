@@ -68,20 +68,30 @@ public:
   std::size_t nearest(const K::Point_3& x) const
   {
     const double r = std::sqrt(m_tree.squared_distance(x)) * (1 + 1e-9) + std::numeric_limits<double>::min();
+    const std::size_t best = nearest_within(x, r, [](std::size_t) { return true; });
+    return best < m_triangles.size() ? best : std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin());
+  }
+  /// The index of the first triangle nearest to x among those closer than r (in each
+  /// coordinate) for which accept(i) is true; the number of triangles if there is none.
+  template <class Accept>
+  std::size_t nearest_within(const K::Point_3& x, double r, const Accept& accept) const
+  {
     std::vector<Triangles::const_iterator> near;
-    m_tree.all_intersected_primitives(CGAL::Bbox_3(x.x() - r, x.y() - r, x.z() - r, x.x() + r, x.y() + r, x.z() + r),
-                                      std::back_inserter(near));
+    if (!empty())
+      m_tree.all_intersected_primitives(CGAL::Bbox_3(x.x() - r, x.y() - r, x.z() - r, x.x() + r, x.y() + r, x.z() + r),
+                                        std::back_inserter(near));
     std::size_t best = m_triangles.size();
     double best_squared = std::numeric_limits<double>::infinity();
     for (const auto& t : near) {
-      const double squared = CGAL::squared_distance(x, *t);
       const std::size_t i = std::size_t(t - m_triangles.cbegin());
+      if (!accept(i)) continue;
+      const double squared = CGAL::squared_distance(x, *t);
       if (squared < best_squared || (squared == best_squared && i < best)) {
         best_squared = squared;
         best = i;
       }
     }
-    return best < m_triangles.size() ? best : std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin());
+    return best;
   }
   /// Calls f(i) with the index (in the shells' order) of each triangle that s meets, except
   /// those for which skip(i) is true: they are not tested (a triangle known to touch s only at

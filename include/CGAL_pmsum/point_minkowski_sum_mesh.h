@@ -250,7 +250,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // Points left out, none as far as dl (farther: a part of the boundary is missing, and
       // the level refused): put back where they can be, the mesh is then closer to them.
       ms.points_put_back = ms.point_distance > 0 && ms.point_distance < dl
-                             ? insert_left_out_points<ConcurrencyTag>(points, part, mesh) : 0;
+                             ? insert_left_out_points<ConcurrencyTag>(points, part, dl, mesh) : 0;
       if (ms.points_put_back > 0) {
         ms.checks = check_mesh_given<ConcurrencyTag>(mesh, true); // (tents that cross were taken down)
         ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh) : std::numeric_limits<double>::infinity();

@@ -9,9 +9,12 @@
 // counts in e, and at a sharp corner that the advancing front cut off, the tent puts the
 // corner back. A point on a side of its nearest triangle (up to rounding: a crease point between
 // two vertices of the crease) stays out: it is on the mesh, and its tent would be a sliver. A
-// tent that crosses the mesh (CGAL's self_intersections()) is taken down again, and so is one
-// that would join the points of two parts of the sum (Sum_parts): the mesh stays as valid as
-// it was.
+// tent that crosses the mesh (CGAL's self_intersections()) is taken down again, and none is
+// raised that would join the points of two parts of the sum (Sum_parts): the mesh stays as
+// valid as it was. A point whose nearest triangle is of another part goes into the nearest
+// triangle of its own part within d' (there can be one a little farther: the plates turned
+// plus a small cube at 2% left a part's points up to 0.94 d from the mesh beside another
+// part's triangles, the exact boundary 1.03 d from the mesh; all put back, 0.69 d).
 
 #ifndef CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
 #define CGAL_PMSUM_INTERNAL_MESH_LEFT_OUT_POINTS_H
@@ -67,11 +70,13 @@ void take_down_crossing_tents(TriangleMesh& mesh, Tents& tent_of, std::unordered
 /// Puts the points of `points` at no vertex of `mesh` (closed, manifold, free of
 /// self-intersections) back into it where it can (see the file comment), in the points'
 /// order, one per triangle a pass (three passes at most); `part[i]` is the part of point i
-/// (Sum_parts::of()): a point goes only into a triangle whose corners are of its part. The
-/// mesh stays closed, manifold and free of self-intersections. Returns how many were put back.
+/// (Sum_parts::of()): a point goes only into a triangle whose corners are of its part, the
+/// nearest one (or, if that is of another part, the nearest of its part closer than `reach`
+/// in each coordinate). The mesh stays closed, manifold and free of self-intersections.
+/// Returns how many were put back.
 template <class ConcurrencyTag, class TriangleMesh, class Point>
 std::size_t insert_left_out_points(const std::vector<Point>& points, const std::vector<std::size_t>& part,
-                                   TriangleMesh& mesh)
+                                   double reach, TriangleMesh& mesh)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -100,10 +105,24 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
     std::vector<char> used(face_of.size(), 0);
     std::unordered_map<vertex_descriptor, std::size_t> tent_of; // new vertex -> point
     bool waiting = false;
-    for (std::size_t i : left_out) {
-      const std::size_t k = tree.nearest(positions[i]);
+    auto corners = [&](std::size_t k) {
       const auto h = halfedge(face_of[k], mesh);
-      const std::array<vertex_descriptor, 3> corner = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+      return std::array<vertex_descriptor, 3>{source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+    };
+    auto of_part = [&](std::size_t k, std::size_t p) {
+      const auto c = corners(k);
+      return part_of(c[0]) == p && part_of(c[1]) == p && part_of(c[2]) == p;
+    };
+    for (std::size_t i : left_out) {
+      // The nearest triangle; if it is of another part, the nearest of the point's own part
+      // within `reach` (a part's points beside another part's triangles).
+      std::size_t k = tree.nearest(positions[i]);
+      if (!of_part(k, part[i]))
+        if (const std::size_t j = tree.nearest_within(positions[i], reach, [&](std::size_t t) { return of_part(t, part[i]); });
+            j < face_of.size())
+          k = j;
+      const auto h = halfedge(face_of[k], mesh);
+      const std::array<vertex_descriptor, 3> corner = corners(k);
       bool same_part = true, on_a_side = false;
       for (int c = 0; c < 3; ++c) {
         same_part = same_part && part_of(corner[c]) == part[i];
