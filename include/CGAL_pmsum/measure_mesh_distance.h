@@ -71,8 +71,9 @@ public:
     const std::size_t best = nearest_within(x, r, [](std::size_t) { return true; });
     return best < m_triangles.size() ? best : std::size_t(m_tree.closest_point_and_primitive(x).second - m_triangles.cbegin());
   }
-  /// The index of the first triangle nearest to x among those closer than r (in each
-  /// coordinate) for which accept(i) is true; the number of triangles if there is none.
+  /// The index of the first triangle nearest to x among those whose bounding box meets the
+  /// box of half-side r round x and for which accept(i) is true; the number of triangles if
+  /// there is none.
   template <class Accept>
   std::size_t nearest_within(const K::Point_3& x, double r, const Accept& accept) const
   {

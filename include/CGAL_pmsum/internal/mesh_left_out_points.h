@@ -71,8 +71,9 @@ void take_down_crossing_tents(TriangleMesh& mesh, Tents& tent_of, std::unordered
 /// self-intersections) back into it where it can (see the file comment), in the points'
 /// order, one per triangle a pass (three passes at most); `part[i]` is the part of point i
 /// (Sum_parts::of()): a point goes only into a triangle whose corners are of its part, the
-/// nearest one (or, if that is of another part, the nearest of its part closer than `reach`
-/// in each coordinate). The mesh stays closed, manifold and free of self-intersections.
+/// nearest one (or, if that is of another part, the nearest of its part whose bounding box
+/// meets the box of half-side `reach` round the point). The mesh stays closed, manifold and
+/// free of self-intersections.
 /// Returns how many were put back.
 template <class ConcurrencyTag, class TriangleMesh, class Point>
 std::size_t insert_left_out_points(const std::vector<Point>& points, const std::vector<std::size_t>& part,
