@@ -118,15 +118,17 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
       // The nearest triangle; if it is of another part, the nearest of the point's own part
       // within `reach` (a part's points beside another part's triangles).
       std::size_t k = tree.nearest(positions[i]);
-      if (!of_part(k, part[i]))
+      bool same_part = of_part(k, part[i]);
+      if (!same_part)
         if (const std::size_t j = tree.nearest_within(positions[i], reach, [&](std::size_t t) { return of_part(t, part[i]); });
-            j < face_of.size())
+            j < face_of.size()) {
           k = j;
+          same_part = true;
+        }
       const auto h = halfedge(face_of[k], mesh);
       const std::array<vertex_descriptor, 3> corner = corners(k);
-      bool same_part = true, on_a_side = false;
+      bool on_a_side = false;
       for (int c = 0; c < 3; ++c) {
-        same_part = same_part && part_of(corner[c]) == part[i];
         // (a point on a side, up to rounding, such as a crease point between two of the
         // crease's vertices, is on the mesh already: its tent would have a triangle with three
         // collinear corners)
