@@ -366,17 +366,32 @@ TEST_CASE("coarse to fine: every level exact and covering, coarser points reused
 
 #include <CGAL/Random.h>
 
+namespace {
+// Convex pairs for the octree filter's tests: the sum is one exact convex piece, and a box is
+// inside it iff its corners are.
+const std::pair<Soup, Soup> certificate_pairs[] = {{box({0, 0, 0}, {1, 0.5, 0.25}), tetrahedron(0.6)},
+                                                   {octahedron(0.8), ellipsoid(0.3, 0.2, 0.5)}};
+
+/// P and Q of a pair as the filters see them.
+struct Pair_data
+{
+  Mesh mp, mq;
+  CGAL::Pmsum::internal::Mesh_descriptors<Mesh> dp, dq;
+  CGAL::Pmsum::internal::Mesh_data a, b;
+  Pair_data(const Soup& P, const Soup& Q)
+    : mp(to_mesh<Mesh>(P)), mq(to_mesh<Mesh>(Q)),
+      a(CGAL::Pmsum::internal::make_mesh_data(mp, get(CGAL::vertex_point, mp), false, false, "P", dp)),
+      b(CGAL::Pmsum::internal::make_mesh_data(mq, get(CGAL::vertex_point, mq), false, false, "Q", dq))
+  {}
+};
+} // namespace
+
 TEST_CASE("interior certificate: every certified box lies inside the exact sum", "[octree]")
 {
   namespace in = CGAL::Pmsum::internal;
-  // Convex pairs: the sum is one exact convex piece, and a box is inside it iff its corners are.
-  const std::pair<Soup, Soup> pairs[] = {{box({0, 0, 0}, {1, 0.5, 0.25}), tetrahedron(0.6)},
-                                         {octahedron(0.8), ellipsoid(0.3, 0.2, 0.5)}};
-  for (const auto& [P, Q] : pairs) {
-    const Mesh mp = to_mesh<Mesh>(P), mq = to_mesh<Mesh>(Q);
-    in::Mesh_descriptors<Mesh> dp, dq;
-    const in::Mesh_data a = in::make_mesh_data(mp, get(CGAL::vertex_point, mp), false, false, "P", dp);
-    const in::Mesh_data b = in::make_mesh_data(mq, get(CGAL::vertex_point, mq), false, false, "Q", dq);
+  for (const auto& [P, Q] : certificate_pairs) {
+    const Pair_data data(P, Q);
+    const in::Mesh_data &a = data.a, &b = data.b;
     const in::Interior_certificate certificate(a, b, 24, 1e-9 * 4, false, nullptr);
     const Reference ref(P, Q);
     REQUIRE(ref.pieces.size() == 1);
@@ -402,6 +417,49 @@ TEST_CASE("interior certificate: every certified box lies inside the exact sum",
     }
     INFO(certified << " of " << inside << " inner boxes certified");
     CHECK(certified > inside / 4); // and useful
+  }
+}
+
+TEST_CASE("octree filter: every point of a certified leaf lies inside the exact sum", "[octree]")
+{
+  // The leaves are certified top-down, by the nodes of every level that hold them: a wrong
+  // node of a leaf (its key, its parent's) would certify leaves outside the node's ball.
+  namespace in = CGAL::Pmsum::internal;
+  for (const auto& [P, Q] : certificate_pairs) {
+    const Pair_data data(P, Q);
+    const in::Mesh_data &a = data.a, &b = data.b;
+    const in::Octree_settings settings(a, b, 0.01);
+    const in::Interior_certificate certificate(a, b, 24, settings.tolerance, false, nullptr);
+    const double h = certificate.largest_ball() / 16; // leaves well below the largest node
+    in::Octree_filter octree(certificate, settings.lo, settings.hi, h, settings.tolerance);
+    REQUIRE(octree.enabled());
+    CGAL::Random rng(5);
+    auto random_point = [&] {
+      in::Point3 x;
+      for (int k = 0; k < 3; ++k) x[k] = rng.get_double(settings.lo[k], settings.hi[k]);
+      return x;
+    };
+    std::vector<in::Point3> points;
+    std::vector<in::Octree_filter::Key> leaves;
+    for (int i = 0; i < 20000; ++i) {
+      points.push_back(random_point());
+      if (auto k = octree.leaf(points.back())) leaves.push_back(*k);
+    }
+    std::sort(leaves.begin(), leaves.end());
+    leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+    octree.certify(leaves, true, nullptr);
+    const Reference ref(P, Q);
+    std::size_t certified = 0, inside = 0;
+    for (const in::Point3& x : points) {
+      const bool in_sum = ref.pieces[0].locate(EK::Point_3(x[0], x[1], x[2])) < 0;
+      inside += in_sum;
+      if (!octree.certified(x)) continue;
+      ++certified;
+      REQUIRE(in_sum);
+    }
+    INFO(certified << " of " << inside << " inner points in certified leaves; " << octree.number_of_certified_leaves()
+                   << " of " << octree.number_of_leaves() << " leaves certified");
+    CHECK(certified > inside / 2);
   }
 }
 

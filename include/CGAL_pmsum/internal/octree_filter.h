@@ -428,15 +428,14 @@ public:
     if (!m_enabled || alive.empty()) return;
     Key all = 0;
     for (Key k : alive) all |= k;
-    int top = 0;
-    for (int c = 0; c < 3; ++c)
-      while ((coordinate(all, c) >> top) != 0) ++top;
+    int top = 0; // the level of the root, the one node holding every leaf
+    while (node(all, top) != 0) ++top;
     for (int level = top; level >= 0 && !alive.empty(); --level) {
-      std::vector<Key> nodes(alive.size());
-      for (std::size_t i = 0; i < alive.size(); ++i) nodes[i] = node(alive[i], level);
-      std::vector<Key> unique = nodes;
-      std::sort(unique.begin(), unique.end());
-      unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+      // The nodes of the level, in the order of the leaves: a node's key is a prefix of its
+      // leaves' keys, so they come sorted, and equal nodes consecutive.
+      std::vector<Key> unique;
+      for (Key k : alive)
+        if (unique.empty() || unique.back() != node(k, level)) unique.push_back(node(k, level));
       const double size = m_h * double(Key(1) << level);
       // The candidates of a leaf are in it up to the leaf margin; centres are rounded.
       const double rho = 0.5 * std::sqrt(3.0) * (size + 2 * m_tol) * (1 + 1e-9) + m_tol;
@@ -450,9 +449,10 @@ public:
           }
         });
       std::vector<Key> next;
-      for (std::size_t i = 0; i < alive.size(); ++i) {
-        const std::size_t u = std::lower_bound(unique.begin(), unique.end(), nodes[i]) - unique.begin();
-        (ok[u] ? m_certified : next).push_back(alive[i]);
+      std::size_t u = 0;
+      for (Key k : alive) {
+        while (unique[u] != node(k, level)) ++u;
+        (ok[u] ? m_certified : next).push_back(k);
       }
       alive.swap(next);
     }
@@ -497,15 +497,36 @@ public:
   std::size_t number_of_certified_leaves() const { return m_certified.size(); }
 
 private:
-  // A cell's key packs its three 21-bit coordinates.
-  static constexpr Key mask = (Key(1) << 21) - 1;
-  static Key key(Key i, Key j, Key k) { return i | (j << 21) | (k << 42); }
-  static Key coordinate(Key key, int c) { return (key >> (21 * c)) & mask; }
+  // A cell's key interleaves the bits of its three 21-bit coordinates (Morton order): bit b
+  // of coordinate c is bit 3b + c of the key. So the key of a cell's parent is the key
+  // shifted by 3 bits, and the cells of a node have consecutive keys.
+  static Key key(Key i, Key j, Key k) { return spread(i) | (spread(j) << 1) | (spread(k) << 2); }
+  static Key coordinate(Key key, int c) { return compact(key >> c); }
+  /// The 21 low bits of x moved to the bits 0, 3, 6, ..., 60.
+  static Key spread(Key x)
+  {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffff;
+    x = (x | x << 16) & 0x1f0000ff0000ff;
+    x = (x | x << 8) & 0x100f00f00f00f00f;
+    x = (x | x << 4) & 0x10c30c30c30c30c3;
+    return (x | x << 2) & 0x1249249249249249;
+  }
+  /// The inverse of spread: the bits 0, 3, 6, ..., 60 of x as a 21-bit number.
+  static Key compact(Key x)
+  {
+    x &= 0x1249249249249249;
+    x = (x ^ (x >> 2)) & 0x10c30c30c30c30c3;
+    x = (x ^ (x >> 4)) & 0x100f00f00f00f00f;
+    x = (x ^ (x >> 8)) & 0x1f0000ff0000ff;
+    x = (x ^ (x >> 16)) & 0x1f00000000ffff;
+    return (x ^ (x >> 32)) & 0x1fffff;
+  }
   static bool in_grid(double cell) { return cell >= 0 && cell < double(1 << 21); }
   /// Coordinate x along axis c in units of leaf cells from the grid's origin.
   double grid(double x, int c) const { return (x - m_origin[c]) / m_h; }
-  static Key node(Key leaf, int level)
-  { return key(coordinate(leaf, 0) >> level, coordinate(leaf, 1) >> level, coordinate(leaf, 2) >> level); }
+  /// The key of the node of `level` (0: the leaves) that holds the leaf.
+  static Key node(Key leaf, int level) { return leaf >> (3 * level); }
 
   const Interior_certificate* m_cert;
   Point3 m_origin{};
