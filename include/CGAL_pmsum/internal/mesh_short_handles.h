@@ -307,12 +307,13 @@ inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::v
   V c{0, 0, 0};
   for (std::size_t i : cycle) c = c + s.points[i];
   c = scaled(c, 1. / double(cycle.size()));
-  // From each vertex p, the way to the axis through c, square to it (the cycle's vertices may
-  // lie at different places along the tube).
-  auto to_axis = [&](const V& p) {
-    const V w = c - p;
-    return w - scaled(axis, dot(w, axis));
-  };
+  // From each vertex p of the cycle, the way to the axis through c, square to it (the cycle's
+  // vertices may lie at different places along the tube).
+  std::vector<V> ways;
+  for (std::size_t i : cycle) {
+    const V w = c - s.points[i];
+    ways.push_back(w - scaled(axis, dot(w, axis)));
+  }
   // Round a tube the cycle winds round the axis: the angles by which the way from the axis to
   // a vertex turns, from each vertex to the next, square to the axis, add up to a whole turn.
   // A cycle out along one wall of a groove and back along the other adds up to none, while
@@ -321,18 +322,18 @@ inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::v
   // meshed with handles too many that such a cycle explained (benchmark/mesh/hard/README.md).
   double turned = 0;
   for (std::size_t k = 0; k < cycle.size(); ++k) {
-    const V a = to_axis(s.points[cycle[k]]), b = to_axis(s.points[cycle[(k + 1) % cycle.size()]]);
+    const V &a = ways[k], &b = ways[(k + 1) % cycle.size()];
     turned += std::atan2(dot(cross(a, b), axis), dot(a, b));
   }
   if (!(std::abs(turned) > std::acos(-1.))) return false; // (|turned| is near 0 or 2 pi)
   double inwards = 0;
-  for (std::size_t i : cycle) inwards += dot(stars.vertex_normal[i], to_axis(s.points[i]));
+  for (std::size_t k = 0; k < cycle.size(); ++k) inwards += dot(stars.vertex_normal[cycle[k]], ways[k]);
   const bool tunnel = inwards > 0;
   if (round_a_tunnel) *round_a_tunnel = tunnel;
   const double start = std::ldexp(1., -20);
-  for (std::size_t i : cycle) {
-    const V& p = s.points[i];
-    const V in = to_axis(p);
+  for (std::size_t k = 0; k < cycle.size(); ++k) {
+    const std::size_t i = cycle[k];
+    const V &p = s.points[i], &in = ways[k];
     if (p + in == p) return false;
     // Beyond p, turned away from p's side of the boundary by as much (a cycle round a tunnel's
     // mouth lies on the face it opens on: the segment straight out would run along that face).
