@@ -125,7 +125,6 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
           k = j;
           same_part = true;
         }
-      const auto h = halfedge(face_of[k], mesh);
       const std::array<vertex_descriptor, 3> corner = corners(k);
       bool on_a_side = false;
       for (int c = 0; c < 3; ++c) {
@@ -139,7 +138,7 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
       else if (used[k]) waiting = true;
       else {
         used[k] = 1;
-        const auto spoke = CGAL::Euler::add_center_vertex(h, mesh);
+        const auto spoke = CGAL::Euler::add_center_vertex(halfedge(face_of[k], mesh), mesh);
         put(CGAL::vertex_point, mesh, target(spoke, mesh), points[i]);
         tent_of.emplace(target(spoke, mesh), i);
       }
