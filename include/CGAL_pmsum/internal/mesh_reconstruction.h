@@ -308,24 +308,42 @@ advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_const
 inline bool orient_manifold_triangles(std::vector<std::array<std::size_t, 3>>& triangles)
 {
   const std::size_t n = triangles.size();
-  auto key = [](std::size_t a, std::size_t b) { return std::uint64_t((std::min)(a, b)) << 32 | (std::max)(a, b); };
-  // The triangles of each edge (the second n while it has one).
-  std::unordered_map<std::uint64_t, std::array<std::size_t, 2>> by_edge;
-  by_edge.reserve(2 * n);
-  for (std::size_t t = 0; t < n; ++t) {
-    const auto& T = triangles[t];
-    CGAL_precondition(T[0] >> 32 == 0 && T[1] >> 32 == 0 && T[2] >> 32 == 0);
+  // The triangles at point p: at[start[p] .. start[p + 1]).
+  std::vector<std::size_t> start(1, 0), at;
+  for (const auto& T : triangles) {
     if (T[0] == T[1] || T[1] == T[2] || T[2] == T[0]) return false;
-    for (int i = 0; i < 3; ++i) {
-      const auto [it, first] = by_edge.try_emplace(key(T[i], T[(i + 1) % 3]), std::array<std::size_t, 2>{t, n});
-      if (first) continue;
-      if (it->second[1] != n) return false;
-      it->second[1] = t;
+    for (std::size_t p : T) {
+      if (p + 2 > start.size()) start.resize(p + 2, 0);
+      ++start[p + 1];
     }
   }
-  auto across = [&](std::size_t t, std::size_t a, std::size_t b) { // the other triangle of edge ab, or n
-    const auto& e = by_edge.find(key(a, b))->second;
-    return e[0] == t ? e[1] : e[0];
+  for (std::size_t p = 1; p < start.size(); ++p) start[p] += start[p - 1];
+  at.resize(3 * n);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < n; ++t)
+      for (std::size_t p : triangles[t]) at[next[p]++] = t;
+  }
+  auto has = [&](std::size_t t, std::size_t p) { return triangles[t][0] == p || triangles[t][1] == p || triangles[t][2] == p; };
+  // The other triangle at each side (side i of t from its corner i to the next), or n.
+  std::vector<std::array<std::size_t, 3>> beyond(n);
+  for (std::size_t t = 0; t < n; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+      std::size_t other = n;
+      for (std::size_t k = start[a]; k < start[a + 1]; ++k) {
+        const std::size_t u = at[k];
+        if (u == t || !has(u, b)) continue;
+        if (other != n) return false; // (a third triangle at the side)
+        other = u;
+      }
+      beyond[t][std::size_t(i)] = other;
+    }
+  auto across = [&](std::size_t t, std::size_t a, std::size_t b) { // the other triangle of side ab of t, or n
+    const auto& T = triangles[t];
+    for (std::size_t i = 0; i < 3; ++i)
+      if ((T[i] == a && T[(i + 1) % 3] == b) || (T[i] == b && T[(i + 1) % 3] == a)) return beyond[t][i];
+    return n;
   };
   auto runs = [&](std::size_t t, std::size_t a, std::size_t b) { // does triangle t run from a to b?
     const auto& T = triangles[t];
@@ -350,26 +368,16 @@ inline bool orient_manifold_triangles(std::vector<std::array<std::size_t, 3>>& t
           if (same_way) return false;
           continue;
         }
-        if (same_way) std::reverse(triangles[u].begin(), triangles[u].end());
+        if (same_way) { // (x, y, z) -> (z, y, x): sides 0 and 1 swap
+          std::reverse(triangles[u].begin(), triangles[u].end());
+          std::swap(beyond[u][0], beyond[u][1]);
+        }
         oriented[u] = true;
         stack.push_back(u);
       }
     }
   }
   // One fan per point: the triangles at p, joined across their edges through p.
-  std::vector<std::size_t> start(1, 0), at; // the triangles at point p: at[start[p] .. start[p + 1])
-  for (const auto& T : triangles)
-    for (std::size_t p : T) {
-      if (p + 2 > start.size()) start.resize(p + 2, 0);
-      ++start[p + 1];
-    }
-  for (std::size_t p = 1; p < start.size(); ++p) start[p] += start[p - 1];
-  at.resize(3 * n);
-  {
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < n; ++t)
-      for (std::size_t p : triangles[t]) at[next[p]++] = t;
-  }
   std::vector<std::size_t> seen(n, 0); // p + 1: reached from the first triangle at p
   for (std::size_t p = 0; p + 1 < start.size(); ++p) {
     if (start[p] == start[p + 1]) continue;

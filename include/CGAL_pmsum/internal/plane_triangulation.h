@@ -309,6 +309,7 @@ bool every_face_in_a_facet_plane(const TriangleMesh& mesh, Face_cover& cover, co
   using Corners = std::array<std::array<double, 3>, 3>;
   struct Face { std::array<std::int64_t, 4> key; std::array<double, 4> plane; Corners corners; };
   std::vector<Face> by_plane;
+  by_plane.reserve(faces(mesh).size());
   for (auto f : faces(mesh)) {
     const std::optional<Corners> x = face_corners(mesh, f);
     if (!x) return false;
