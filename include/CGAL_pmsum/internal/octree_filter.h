@@ -48,6 +48,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -421,8 +422,10 @@ public:
 
   /// Certifies the given leaves (sorted, unique), top-down over the octree levels, in
   /// parallel if asked, shared among the ranks of `comm` (collective) if not null.
+  /// @pre `alive` is sorted and holds no key twice
   void certify(std::vector<Key> alive, bool parallel, Communicator* comm)
   {
+    CGAL_precondition(std::adjacent_find(alive.begin(), alive.end(), std::greater_equal<Key>()) == alive.end());
     m_leaves = alive.size();
     m_certified.clear();
     if (!m_enabled || alive.empty()) return;
