@@ -63,6 +63,7 @@
 #include <unordered_set>
 #include <utility>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -297,6 +298,43 @@ advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_const
   return triangles;
 }
 
+/// The triangles at each point of a triangle soup (point indices): those at point p are
+/// at[start[p]] .. at[start[p + 1] - 1], in the order of the triangles.
+struct Triangle_stars
+{
+  using Triangles = std::vector<std::array<std::size_t, 3>>;
+  std::vector<std::size_t> start, at;
+
+  /// @pre every index of `triangles` is below `points`
+  Triangle_stars(const Triangles& triangles, std::size_t points) : start(points + 1, 0), at(3 * triangles.size())
+  {
+    for (const auto& t : triangles)
+      for (std::size_t p : t) ++start[p + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::size_t> filled(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < triangles.size(); ++f)
+      for (std::size_t p : triangles[f]) at[filled[p]++] = f;
+  }
+
+  /// The triangle across side i of triangle f, from its corner i to the next: the first other
+  /// one at that side's first corner with its second; `triangles.size()` if there is none.
+  /// `another`, if given, tells whether a third triangle has that side too.
+  std::size_t across(const Triangles& triangles, std::size_t f, int i, bool* another = nullptr) const
+  {
+    const std::size_t a = triangles[f][std::size_t(i)], b = triangles[f][std::size_t(i + 1) % 3];
+    std::size_t found = triangles.size();
+    if (another) *another = false;
+    for (std::size_t k = start[a]; k < start[a + 1]; ++k) {
+      const auto& t = triangles[at[k]];
+      if (at[k] == f || std::count(t.begin(), t.end(), b) == 0) continue;
+      if (found == triangles.size()) found = at[k];
+      else if (another) *another = true;
+      if (!another) break;
+    }
+    return found;
+  }
+};
+
 /// Orients `triangles` (point indices) consistently if they form an orientable 2-manifold
 /// (with or without border), as CGAL's orient_polygon_soup() would (each edge-connected
 /// component keeps the orientation of its first triangle; a triangle turned is reversed):
@@ -308,36 +346,21 @@ advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_const
 inline bool orient_manifold_triangles(std::vector<std::array<std::size_t, 3>>& triangles)
 {
   const std::size_t n = triangles.size();
-  // The triangles at point p: at[start[p] .. start[p + 1]).
-  std::vector<std::size_t> start(1, 0), at;
+  std::size_t points = 0;
   for (const auto& T : triangles) {
     if (T[0] == T[1] || T[1] == T[2] || T[2] == T[0]) return false;
-    for (std::size_t p : T) {
-      if (p + 2 > start.size()) start.resize(p + 2, 0);
-      ++start[p + 1];
-    }
+    points = (std::max)(points, *std::max_element(T.begin(), T.end()) + 1);
   }
-  for (std::size_t p = 1; p < start.size(); ++p) start[p] += start[p - 1];
-  at.resize(3 * n);
-  {
-    std::vector<std::size_t> next(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < n; ++t)
-      for (std::size_t p : triangles[t]) at[next[p]++] = t;
-  }
-  auto has = [&](std::size_t t, std::size_t p) { return triangles[t][0] == p || triangles[t][1] == p || triangles[t][2] == p; };
+  const Triangle_stars stars(triangles, points);
+  const auto& start = stars.start;
+  const auto& at = stars.at;
   // The other triangle at each side (side i of t from its corner i to the next), or n.
   std::vector<std::array<std::size_t, 3>> beyond(n);
   for (std::size_t t = 0; t < n; ++t)
     for (int i = 0; i < 3; ++i) {
-      const std::size_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
-      std::size_t other = n;
-      for (std::size_t k = start[a]; k < start[a + 1]; ++k) {
-        const std::size_t u = at[k];
-        if (u == t || !has(u, b)) continue;
-        if (other != n) return false; // (a third triangle at the side)
-        other = u;
-      }
-      beyond[t][std::size_t(i)] = other;
+      bool third = false;
+      beyond[t][std::size_t(i)] = stars.across(triangles, t, i, &third);
+      if (third) return false;
     }
   auto across = [&](std::size_t t, std::size_t a, std::size_t b) { // the other triangle of side ab of t, or n
     const auto& T = triangles[t];

@@ -70,7 +70,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -79,42 +78,21 @@ namespace Pmsum {
 namespace internal {
 
 /// The triangles at each vertex of a shell, with their normals and the vertices'.
-struct Vertex_stars
+struct Vertex_stars : Triangle_stars // (the triangles at each vertex)
 {
   using V = std::array<double, 3>;
-  std::vector<V> normal;              // of each triangle (length: twice its area)
-  std::vector<V> vertex_normal;       // of each vertex: the sum of its triangles'
-  std::vector<std::size_t> start, at; // the triangles at vertex v: at[start[v]] .. at[start[v + 1] - 1]
+  std::vector<V> normal;        // of each triangle (length: twice its area)
+  std::vector<V> vertex_normal; // of each vertex: the sum of its triangles'
 
   explicit Vertex_stars(const Shell& s)
-    : normal(s.triangles.size()), vertex_normal(s.points.size(), V{0, 0, 0}), start(s.points.size() + 1, 0),
-      at(3 * s.triangles.size())
+    : Triangle_stars(s.triangles, s.points.size()), normal(s.triangles.size()),
+      vertex_normal(s.points.size(), V{0, 0, 0})
   {
     for (std::size_t f = 0; f < s.triangles.size(); ++f) {
       const auto& t = s.triangles[f];
       normal[f] = triangle_normal<double>(s.points[t[0]], s.points[t[1]], s.points[t[2]]);
-      for (std::size_t v : t) {
-        vertex_normal[v] = vertex_normal[v] + normal[f];
-        ++start[v + 1];
-      }
+      for (std::size_t v : t) vertex_normal[v] = vertex_normal[v] + normal[f];
     }
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<std::size_t> filled(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < s.triangles.size(); ++f)
-      for (std::size_t v : s.triangles[f]) at[filled[v]++] = f;
-  }
-
-  /// The triangle of `s` (the shell of these stars) across side i of triangle f, from corner
-  /// i to the next: the other one at that side's first corner with its second (one, if `s` is
-  /// closed and manifold); `s.triangles.size()` if there is none.
-  std::size_t across(const Shell& s, std::size_t f, int i) const
-  {
-    const std::size_t a = s.triangles[f][i], b = s.triangles[f][(i + 1) % 3];
-    for (std::size_t k = start[a]; k < start[a + 1]; ++k) {
-      const auto& t = s.triangles[at[k]];
-      if (at[k] != f && std::count(t.begin(), t.end(), b) > 0) return at[k];
-    }
-    return s.triangles.size();
   }
 };
 
@@ -156,7 +134,7 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
     if (zero == 0) return o[0] == o[1] && o[1] == o[2];
     if (zero != 1) return false; // (through a corner, or in f's plane)
     const int i = int(std::find(o, o + 3, CGAL::COPLANAR) - o);
-    const std::size_t g = stars.across(s, f, i);
+    const std::size_t g = stars.across(s.triangles, f, i);
     return o[(i + 1) % 3] == o[(i + 2) % 3] && g < s.triangles.size() && dot(normal[g], u) > 0;
   };
   auto shares_a_side = [&](std::size_t f, std::size_t g) {

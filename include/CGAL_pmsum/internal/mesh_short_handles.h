@@ -91,7 +91,7 @@ public:
       m_state(s.triangles.size() + 1, Out) // (the last: no triangle)
   {
     for (std::size_t f = 0; f < s.triangles.size(); ++f)
-      for (int i = 0; i < 3; ++i) m_across[3 * f + i] = stars.across(s, f, i);
+      for (int i = 0; i < 3; ++i) m_across[3 * f + i] = stars.across(s.triangles, f, i);
   }
 
   /// The Euler characteristic of the component at v of the surface within r of v (1 if it has
