@@ -355,12 +355,21 @@ expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work
 expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
 expect_fail 2 "trim and island points"   -- validate "$cube" "$tet" -d 0.2 --mesh --no-islands
 expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
-# a slab far thinner than the points' spacing: meshed plane by plane from the crease points of
-# the first refinement, within rounding of the exact box (validate: exit 0, within d both ways)
+# a slab far thinner than the points' spacing: meshed at d, the triangles from one side of the slab
+# to the other refused (before, plane by plane from the crease points of the first refinement),
+# within rounding of the exact box (validate: exit 0, within d both ways)
 printf 'OFF\n8 12 0\n0 0 0\n0 0 0.01\n0 2 0\n0 2 0.01\n2 0 0\n2 0 0.01\n2 2 0\n2 2 0.01\n3 0 1 3\n3 0 3 2\n3 4 6 7\n3 4 7 5\n3 0 4 5\n3 0 5 1\n3 2 3 7\n3 2 7 6\n3 0 2 6\n3 0 6 4\n3 1 5 7\n3 1 7 3\n' > "$work/slab.off"
 "$pmsum" validate "$work/slab.off" "$tet" --scale-q 0.01 -d 0.5 --mesh > "$work/slab.txt" 2>&1
-if [ $? = 0 ] && grep -q "verdict           OK" "$work/slab.txt" && grep -q "plane by plane" "$work/slab.txt"
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/slab.txt" && grep -q "(d = 0.5, 0 refinements)" "$work/slab.txt"
 then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
+# a hollow box with windows through its walls (walls thinner than d) + a tetrahedron a tenth of its
+# size at d = 6%: points on the borders of the walls' faces carried no normal, and the advancing
+# front joined a wall's outer face to the cavity's across the wall (Euler characteristic -10, a
+# handle the sum does not have); validate compares with Nef's
+"$pmsum" generate hollow-box -o "$work/hollow-box.off" > /dev/null
+"$pmsum" validate "$work/hollow-box.off" "$tet" --scale-q 0.1 -d 0.06 --relative --mesh > "$work/hb.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/hb.txt" && grep -q "mesh topology     Euler characteristic -8, exact: -8" "$work/hb.txt"
+then ok; else ko "hollow box: the walls' two sides not joined"; cat "$work/hb.txt"; fi
 # tripod + an octahedron a thousandth of its size at d = 2%: the advancing front once made a mesh
 # that passed every check of the mesh itself with triangles 5 d long across a concave corner, 1.7 d
 # from the exact boundary; now such triangles are refused: a mesh within d of Nef's boundary both

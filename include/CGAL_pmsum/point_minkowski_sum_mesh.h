@@ -204,21 +204,29 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     const double dl = d / double(1 << level.halvings) * (level.again ? 1 - 1. / 1024 : 1);
     const auto t_sum = Clock::now();
     std::vector<Point> points;
-    std::vector<Epick::Vector_3> normals, face_normals; // (face_normals: of a face through the point)
+    std::vector<Epick::Vector_3> normals, sides, face_normals; // (face_normals: of a face through the point)
     std::vector<std::size_t> part;                      // Sum_parts::of() the point
     Crease_planes crease_planes;                        // the faces at points on creases
     stats = Statistics();
     pipeline.run_level(dl, stats, [&](const Sample& sp, const Sample& sq, const Direction& direction, const Trim* trim) {
       points.emplace_back(output_point<GT>(mp, mq, sp, sq, trim));
       part.push_back(parts.of(mp, mq, sp, sq));
-      // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is given.
       face_normals.push_back(output_normal<Epick>(mp, mq, direction));
-      if (trim || sp.origin.dimension + sq.origin.dimension <= 1) normals.push_back(CGAL::NULL_VECTOR);
-      else normals.push_back(face_normals.back());
+      bool on_crease = false;
       if (!trim)
-        for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w, const Mesh_data&, Index) {
+        for_each_crease_wedge(sp.origin, sq.origin, mp, mq, [&](const std::array<Vec3<double>, 2>& w, const Mesh_data& E, Index e) {
+          on_crease = on_crease || !E.edges[e].flat;
           for (const Vec3<double>& n : w) crease_planes.emplace_back(points.size() - 1, Epick::Vector_3(n[0], n[1], n[2]));
         });
+      // On a convolution edge or vertex, or a trim curve, the normal is one of several: none is
+      // given. A vertex plus an edge off every crease of the pair (a vertex sample at the end of
+      // an edge whose sum with an edge of the other mesh is a face) tells the side it is on:
+      // the face's normal, unless the point is on a crease of other features too (as where parts
+      // of a mesh touch), so it only refuses triangles to the opposite side (sides_apart()).
+      const int dimension = sp.origin.dimension + sq.origin.dimension;
+      const bool given = !trim && dimension == 2;
+      normals.push_back(given ? face_normals.back() : CGAL::NULL_VECTOR);
+      sides.push_back(given || (!trim && dimension == 1 && !on_crease) ? face_normals.back() : CGAL::NULL_VECTOR);
     }, start, level.strips, level.creases);
     start = Clock::now();
     ms.sum = stats;
@@ -239,7 +247,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       std::optional<Cd_filter> cd;
       auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
-        triangles = advancing_front_triangles(positions, normals, dl);
+        triangles = advancing_front_triangles(positions, normals, sides, dl);
       } else {
         cd.emplace(geometry);
         triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, level_cover());

@@ -55,6 +55,7 @@ struct Mesh_data
     std::array<Index, 2> v;   // endpoints; v[0] -> v[1] is the orientation of triangle f[0]
     std::array<Index, 2> f;   // incident triangles; f[1] == no_index on a border edge
     bool convex;              // border edges and convex or flat interior edges
+    bool flat = false;        // interior edges whose two triangles are coplanar
   };
   struct Component
   {
@@ -540,7 +541,7 @@ private:
   std::vector<std::vector<Index>> m_triangles, m_vertices; // of each component
 };
 
-/// Convexity of interior edges: the far vertex of f[1] is not above the plane of f[0].
+/// Convexity of interior edges: the far vertex of f[1] is not above the plane of f[0] (flat: on it).
 inline void mark_convex_edges(Mesh_data& m)
 {
   for (Index i = 0; i < m.edges.size(); ++i) {
@@ -548,11 +549,12 @@ inline void mark_convex_edges(Mesh_data& m)
     if (e.f[1] == no_index) continue;
     const Index far = m.opposite_vertex(e.f[1], i);
     const Index t0 = e.f[0];
-    e.convex = filtered_sign([&](auto nt) {
-                 using NT = decltype(nt);
-                 return dot(m.point<NT>(far) - m.point<NT>(m.triangles[t0][0]),
-                            m.triangle_normal<NT>(t0));
-               }) != CGAL::POSITIVE;
+    const CGAL::Sign far_side = filtered_sign([&](auto nt) {
+      using NT = decltype(nt);
+      return dot(m.point<NT>(far) - m.point<NT>(m.triangles[t0][0]), m.triangle_normal<NT>(t0));
+    });
+    e.convex = far_side != CGAL::POSITIVE;
+    e.flat = far_side == CGAL::ZERO;
   }
 }
 

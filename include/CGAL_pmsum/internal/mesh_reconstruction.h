@@ -10,7 +10,13 @@
 // by the sum of the three). Such a triangle joins the two sides of a thin part or of a narrow
 // passage, or the outside of a shell to a void: points close together on surfaces that face
 // away from each other. The normal of a point inside a convolution facet is the facet's; on a
-// convolution edge or vertex (a possible crease or corner) it is not unique and not used.
+// convolution edge or vertex (a possible crease or corner) it is not unique and not used. A
+// vertex plus an edge that makes no crease with it (a point on the border of a face, inside a
+// flat region of the sum) still tells the side it is on: a triangle is refused where two
+// corners are on sides back to back (the two sides of a wall thinner than d, whose points on
+// such borders carried no normal, and the advancing front joined the wall's outer face to the
+// inner face of a hollow box across it). That side is not a normal for the 80-degree test:
+// where parts of a mesh touch, the point may be on a crease of features it does not come from.
 // A triangle with a point d or farther from its three corners is refused too: it could not be
 // shown within d of the points (mesh_distance_bound()), and such triangles bridge concave
 // corners, where the crease points carry no normal.
@@ -97,7 +103,10 @@ inline double corner_covering_radius(const std::array<double, 3>& a, const std::
 /// sphere through the triangle), but infinity (refused) for a triangle that makes an angle of
 /// more than 80 degrees with a vertex normal (the triangle oriented by the sum of its vertex
 /// normals). A zero normal (a point on a crease or a corner, where the normal is not unique)
-/// accepts any triangle. Equal radii are frequent (lattice points on flat faces are
+/// accepts any triangle. A triangle is refused too where two of its corners are on sides of
+/// the sum back to back (`sides`: the two sides of a thin wall, see back_to_back()); a side
+/// may be known where the normal is not given (a point that may be on a crease of features it
+/// does not come from, as where parts of a mesh touch). Equal radii are frequent (lattice points on flat faces are
 /// cospherical), and CGAL breaks such ties by the addresses of its border elements, which
 /// depend on what the process allocated before: the radius is scaled by 1 + 2^-40 h, h in
 /// [0, 1) a hash of the triangle's vertices, so that the mesh does not.
@@ -105,6 +114,7 @@ struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
   const std::vector<Vector>* normals;
+  const std::vector<Vector>* sides; // unit normals of the sides the points are on, or zero
   double d;  // the covering distance of the points
   bool flat; // are the points coplanar (CGAL then adds a vertex)?
 
@@ -136,8 +146,21 @@ struct Normal_consistent_priority
     const double length = std::sqrt(t.squared_length());
     for (const Vector& nk : n)
       if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return infinity;
+    if (back_to_back(v[0], v[1]) || back_to_back(v[1], v[2]) || back_to_back(v[2], v[0])) return infinity;
     const double radius = adv.smallest_radius_delaunay_sphere(c, index);
     return radius == infinity ? radius : scaled_radius(radius, v);
+  }
+
+  /// Are points a and b on sides of the sum that face away from each other, back to back (the
+  /// two sides of a wall): normals more than 160 degrees apart, each point in front of the
+  /// other's side? (Sides that face each other, across a gap, may be joined.)
+  template <class Vertex_handle>
+  bool back_to_back(const Vertex_handle& a, const Vertex_handle& b) const
+  {
+    const double cos_160 = -0.9396926207859084;
+    const Vector& na = (*sides)[a->id()];
+    const Vector& nb = (*sides)[b->id()];
+    return na * nb < cos_160 && (a->point() - b->point()) * na > 0 && (b->point() - a->point()) * nb > 0;
   }
 
   /// The radius scaled by 1 + 2^-40 h, h a hash of the triangle's vertices (see above).
@@ -283,17 +306,18 @@ inline bool coplanar_points(const std::vector<CGAL::Exact_predicates_inexact_con
 }
 
 /// The triangles that CGAL's advancing front makes of `positions` (a d-covering), chosen by
-/// their unit outward `normals` (Normal_consistent_priority).
+/// their unit outward `normals` and the sides the points are on (Normal_consistent_priority).
 inline std::vector<std::array<std::size_t, 3>>
 advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
                           const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
+                          const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& sides,
                           double d)
 {
   std::vector<std::array<std::size_t, 3>> triangles;
   const bool flat = coplanar_points(positions);
   on_own_thread([&] {
     CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
-                                                 Normal_consistent_priority{&normals, d, flat});
+                                                 Normal_consistent_priority{&normals, &sides, d, flat});
   });
   return triangles;
 }
