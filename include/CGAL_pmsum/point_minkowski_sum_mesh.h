@@ -222,7 +222,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // given. A vertex plus an edge off every crease of the pair (a vertex sample at the end of
       // an edge whose sum with an edge of the other mesh is a face) tells the side it is on:
       // the face's normal, unless the point is on a crease of other features too (as where parts
-      // of a mesh touch), so it only refuses triangles to the opposite side (sides_apart()).
+      // of a mesh touch), so it only refuses triangles to the opposite side (back_to_back()).
       const int dimension = sp.origin.dimension + sq.origin.dimension;
       const bool given = !trim && dimension == 2;
       normals.push_back(given ? face_normals.back() : CGAL::NULL_VECTOR);

@@ -106,10 +106,10 @@ inline double corner_covering_radius(const std::array<double, 3>& a, const std::
 /// accepts any triangle. A triangle is refused too where two of its corners are on sides of
 /// the sum back to back (`sides`: the two sides of a thin wall, see back_to_back()); a side
 /// may be known where the normal is not given (a point that may be on a crease of features it
-/// does not come from, as where parts of a mesh touch). Equal radii are frequent (lattice points on flat faces are
-/// cospherical), and CGAL breaks such ties by the addresses of its border elements, which
-/// depend on what the process allocated before: the radius is scaled by 1 + 2^-40 h, h in
-/// [0, 1) a hash of the triangle's vertices, so that the mesh does not.
+/// does not come from, as where parts of a mesh touch). Equal radii are frequent (lattice
+/// points on flat faces are cospherical), and CGAL breaks such ties by the addresses of its
+/// border elements, which depend on what the process allocated before: the radius is scaled
+/// by 1 + 2^-40 h, h in [0, 1) a hash of the triangle's vertices, so that the mesh does not.
 struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
