@@ -370,6 +370,15 @@ then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
 "$pmsum" validate "$work/hollow-box.off" "$tet" --scale-q 0.1 -d 0.06 --relative --mesh > "$work/hb.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/hb.txt" && grep -q "mesh topology     Euler characteristic -8, exact: -8" "$work/hb.txt"
 then ok; else ko "hollow box: the walls' two sides not joined"; cat "$work/hb.txt"; fi
+# knot1 + a tetrahedron of 1/32 at d = 3.5%: two strands of the knot's sum pass 0.56-0.67 d apart,
+# and the advancing front joined them by a neck across the gap (Euler characteristic -2). knot1 is
+# a knotted solid torus, and so is its sum with a small convex solid: Euler characteristic 0. The
+# neck is refused, and the mesh at d/2 has the exact characteristic (Nef takes 14 minutes here)
+"$pmsum" mesh "$data/knot1.off" "$tet" --scale-q 0.03125 -d 0.035 --relative -o "$work/knot_neck.off" \
+  --json "$work/knot_neck.json" --quiet
+if [ $? = 0 ] && grep -q '"euler_characteristic": 0' "$work/knot_neck.json" && grep -q '"shells": 1' "$work/knot_neck.json" &&
+   grep -q "neck across free space" "$work/knot_neck.json"
+then ok; else ko "knot1 + tetrahedron/32 at 3.5%: no neck across the gap between strands"; fi
 # tripod + an octahedron a thousandth of its size at d = 2%: the advancing front once made a mesh
 # that passed every check of the mesh itself with triangles 5 d long across a concave corner, 1.7 d
 # from the exact boundary; now such triangles are refused: a mesh within d of Nef's boundary both

@@ -1420,6 +1420,56 @@ TEST_CASE("has_false_short_handle: a tunnel of the mesh a few d round, the sum's
   CHECK_FALSE(has_false_short_handle(tunnel_mesh(0.05), 0.4, search, false));
 }
 
+TEST_CASE("has_neck_across_free_space: two blocks joined by a neck across a gap, the sum's or not", "[applications][mesh]")
+{
+  // The blocks A = [0, 4]^2 x [0, 1] and B = [0, 4]^2 x [1.5, 2.5], 0.5 apart, as the sum of the
+  // cube of half-side 0.25 and the blocks shrunk by it; with the bar [1.75, 2.25]^2 x [0.75,
+  // 1.75] between them (touching both), the sum also has the neck N = [1.5, 2.5]^2 x [1, 1.5].
+  // The meshes: the boundary of A, N and B (one shell, the neck's walls 1 wide), or A's and B's
+  // (two shells). At d = 0.8 the segments from the neck's walls into the mesh cross the neck
+  // (1 < 2 d): through free space where the sum has no neck, and the walls over free space make
+  // a ring round it (knot1 + tetrahedron/32 at 3.5% was meshed so, benchmark/mesh/hard/README.md).
+  using namespace CGAL::Pmsum::internal;
+  Soup dumbbell;
+  for (const auto& [z, a] : {std::pair{0., 0.}, std::pair{1., 0.}, std::pair{1., 1.5}, std::pair{1.5, 1.5}, std::pair{1.5, 0.},
+                             std::pair{2.5, 0.}})
+    for (const auto& [x, y] : {std::pair{a, a}, std::pair{4 - a, a}, std::pair{4 - a, 4 - a}, std::pair{a, 4 - a}})
+      dumbbell.points.push_back({x, y, z});
+  auto quad = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+    dumbbell.triangles.push_back({a, b, c});
+    dumbbell.triangles.push_back({a, c, d});
+  };
+  quad(0, 3, 2, 1);   // A's bottom, facing down
+  quad(20, 21, 22, 23); // B's top, facing up
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::size_t n = (k + 1) % 4;
+    for (std::size_t ring : {0, 2, 4}) quad(4 * ring + k, 4 * ring + n, 4 * ring + 4 + n, 4 * ring + 4 + k); // sides: A, N, B
+    quad(4 + k, 4 + n, 8 + n, 8 + k);     // A's top, round the neck, facing up
+    quad(16 + n, 16 + k, 12 + k, 12 + n); // B's bottom, facing down
+  }
+  const double c = 0.25;
+  Soup blocks = box({c, c, c}, {4 - c, 4 - c, 1 - c});
+  blocks.append(box({c, c, 1.5 + c}, {4 - c, 4 - c, 2.5 - c}));
+  Soup with_bar = blocks;
+  with_bar.append(box({1.75, 1.75, 0.75}, {2.25, 2.25, 1.75}));
+  Soup apart = box({0, 0, 0}, {4, 4, 1});
+  apart.append(box({0, 0, 1.5}, {4, 4, 2.5}));
+  struct Case { const char* what; const Soup& mesh; const Soup& q; bool neck; };
+  for (const Case& k : {Case{"the neck, across the gap", dumbbell, blocks, true}, Case{"the neck, the sum's", dumbbell, with_bar, false},
+                        Case{"the blocks apart", apart, blocks, false}}) {
+    INFO(k.what);
+    const Mesh m = to_mesh<Mesh>(subdivided(k.mesh, 2));
+    REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
+    const auto operands = cd_operands(box({-c, -c, -c}, {c, c, c}), k.q);
+    const Cd_geometry geometry(operands.first, operands.second);
+    Cd_filter filter(&geometry);
+    Segment_search search(filter);
+    auto free_at = [&](const std::array<double, 3>& x) { return filter.is_free_at(x); };
+    CHECK(has_neck_across_free_space(m, 0.8, search, free_at, false) == k.neck);
+    CHECK(has_neck_across_free_space(m, 0.8, search, free_at, true) == k.neck); // (chosen on TBB's threads)
+  }
+}
+
 TEST_CASE("mesh of a grate with its axes permuted: no second sheet, the sum's Euler characteristic", "[applications][mesh]")
 {
   // grate-a (8 bars, 9 holes) with (x, y, z) -> (-0.75 z, x, 1.5 y), plus a cube of side 0.3,
