@@ -1020,7 +1020,8 @@ TEST_CASE("crossings_near: the crossings of the suspect triangles only; the adva
     points.emplace_back(random.get_double(0, 1), random.get_double(0, 1), random.get_double(0, 0.2));
     normals.push_back(CGAL::NULL_VECTOR);
   }
-  const auto triangles = CGAL::Pmsum::internal::advancing_front_triangles(points, normals, normals, 1);
+  const auto triangles = CGAL::Pmsum::internal::advancing_front_triangles(
+    points, normals, std::vector<CGAL::Pmsum::internal::Normal_use>(points.size(), CGAL::Pmsum::internal::Normal_use::none), 1);
   REQUIRE(triangles.size() > 100);
   std::size_t disjoint = 0, meeting = 0;
   for (std::size_t i = 0; i < triangles.size(); ++i)

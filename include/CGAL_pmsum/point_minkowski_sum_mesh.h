@@ -206,7 +206,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     const double dl = d / double(1 << level.halvings) * (level.again ? 1 - 1. / 1024 : 1);
     const auto t_sum = Clock::now();
     std::vector<Point> points;
-    std::vector<Epick::Vector_3> normals, sides, face_normals; // (face_normals: of a face through the point)
+    std::vector<Epick::Vector_3> face_normals;          // of a face through the point
+    std::vector<Normal_use> use;                        // what that normal tells the advancing front
     std::vector<std::size_t> part;                      // Sum_parts::of() the point
     Crease_planes crease_planes;                        // the faces at points on creases
     stats = Statistics();
@@ -227,8 +228,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // of a mesh touch), so it only refuses triangles to the opposite side (back_to_back()).
       const int dimension = sp.origin.dimension + sq.origin.dimension;
       const bool given = !trim && dimension == 2;
-      normals.push_back(given ? face_normals.back() : CGAL::NULL_VECTOR);
-      sides.push_back(given || (!trim && dimension == 1 && !on_crease) ? face_normals.back() : CGAL::NULL_VECTOR);
+      use.push_back(given ? Normal_use::normal : !trim && dimension == 1 && !on_crease ? Normal_use::side : Normal_use::none);
     }, start, level.strips, level.creases);
     start = Clock::now();
     ms.sum = stats;
@@ -249,7 +249,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       std::optional<Cd_filter> cd;
       auto free_at = [&](const std::array<double, 3>& x) { return cd->is_free_at(x); };
       if (way == 0) {
-        triangles = advancing_front_triangles(positions, normals, sides, dl);
+        triangles = advancing_front_triangles(positions, face_normals, use, dl);
       } else {
         cd.emplace(geometry);
         triangles = plane_triangles(positions, face_normals, crease_planes, dl, free_at, level_cover());

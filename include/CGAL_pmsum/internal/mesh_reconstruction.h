@@ -99,22 +99,28 @@ inline double corner_covering_radius(const std::array<double, 3>& a, const std::
   return (std::max)(s1 * std::sqrt(s2) / (s1 + s2 - s0), s0 * std::sqrt(s2) / (s0 + s2 - s1));
 }
 
+/// What the normal of a face through a point tells the advancing front
+/// (Normal_consistent_priority): nothing (a point on a crease or a corner, where the normal is
+/// not unique, or on a trim curve), only the side of the sum the point is on (a point that may
+/// be on a crease of features it does not come from, as where parts of a mesh touch), or also
+/// its normal.
+enum class Normal_use : unsigned char { none, side, normal };
+
 /// Priority of the advancing front: CGAL's default (the radius of the smallest Delaunay
 /// sphere through the triangle), but infinity (refused) for a triangle that makes an angle of
 /// more than 80 degrees with a vertex normal (the triangle oriented by the sum of its vertex
-/// normals). A zero normal (a point on a crease or a corner, where the normal is not unique)
-/// accepts any triangle. A triangle is refused too where two of its corners are on sides of
-/// the sum back to back (`sides`: the two sides of a thin wall, see back_to_back()); a side
-/// may be known where the normal is not given (a point that may be on a crease of features it
-/// does not come from, as where parts of a mesh touch). Equal radii are frequent (lattice
+/// normals; only the points whose `use` is Normal_use::normal have one: the others accept any
+/// triangle). A triangle is refused too where two of its corners are on sides of the sum back
+/// to back (the two sides of a thin wall, see back_to_back(); points whose `use` is not
+/// Normal_use::none). Equal radii are frequent (lattice
 /// points on flat faces are cospherical), and CGAL breaks such ties by the addresses of its
 /// border elements, which depend on what the process allocated before: the radius is scaled
 /// by 1 + 2^-40 h, h in [0, 1) a hash of the triangle's vertices, so that the mesh does not.
 struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
-  const std::vector<Vector>* normals;
-  const std::vector<Vector>* sides; // unit normals of the sides the points are on, or zero
+  const std::vector<Vector>* normals; // unit normals of a face through each point
+  const std::vector<Normal_use>* use;  // what each point's normal tells
   double d;  // the covering distance of the points
   bool flat; // are the points coplanar (CGAL then adds a vertex)?
 
@@ -138,7 +144,8 @@ struct Normal_consistent_priority
         adv.smallest_radius_delaunay_sphere(c, index) == infinity)
       return infinity;
     std::array<Vector, 3> n;
-    for (int k = 0; k < 3; ++k) n[k] = (*normals)[v[k]->id()];
+    for (int k = 0; k < 3; ++k)
+      n[k] = (*use)[v[k]->id()] == Normal_use::normal ? (*normals)[v[k]->id()] : CGAL::NULL_VECTOR;
     auto at = [&](int k) { return std::array<double, 3>{v[k]->point().x(), v[k]->point().y(), v[k]->point().z()}; };
     if (corner_covering_radius(at(0), at(1), at(2)) >= d) return infinity;
     Vector t = CGAL::cross_product(v[1]->point() - v[0]->point(), v[2]->point() - v[0]->point());
@@ -158,8 +165,9 @@ struct Normal_consistent_priority
   bool back_to_back(const Vertex_handle& a, const Vertex_handle& b) const
   {
     const double cos_160 = -0.9396926207859084;
-    const Vector& na = (*sides)[a->id()];
-    const Vector& nb = (*sides)[b->id()];
+    if ((*use)[a->id()] == Normal_use::none || (*use)[b->id()] == Normal_use::none) return false;
+    const Vector& na = (*normals)[a->id()];
+    const Vector& nb = (*normals)[b->id()];
     return na * nb < cos_160 && (a->point() - b->point()) * na > 0 && (b->point() - a->point()) * nb > 0;
   }
 
@@ -306,18 +314,18 @@ inline bool coplanar_points(const std::vector<CGAL::Exact_predicates_inexact_con
 }
 
 /// The triangles that CGAL's advancing front makes of `positions` (a d-covering), chosen by
-/// their unit outward `normals` and the sides the points are on (Normal_consistent_priority).
+/// the unit outward `normals` of a face through each point, as far as `use` says
+/// (Normal_consistent_priority).
 inline std::vector<std::array<std::size_t, 3>>
 advancing_front_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
                           const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& normals,
-                          const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>& sides,
-                          double d)
+                          const std::vector<Normal_use>& use, double d)
 {
   std::vector<std::array<std::size_t, 3>> triangles;
   const bool flat = coplanar_points(positions);
   on_own_thread([&] {
     CGAL::advancing_front_surface_reconstruction(positions.begin(), positions.end(), std::back_inserter(triangles),
-                                                 Normal_consistent_priority{&normals, &sides, d, flat});
+                                                 Normal_consistent_priority{&normals, &use, d, flat});
   });
   return triangles;
 }
