@@ -370,6 +370,12 @@ then ok; else ko "thin slab meshed"; cat "$work/slab.txt"; fi
 "$pmsum" validate "$work/hollow-box.off" "$tet" --scale-q 0.1 -d 0.06 --relative --mesh > "$work/hb.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/hb.txt" && grep -q "mesh topology     Euler characteristic -8, exact: -8" "$work/hb.txt"
 then ok; else ko "hollow box: the walls' two sides not joined"; cat "$work/hb.txt"; fi
+# the same at d = 5%: the advancing front laid triangles in the plane between two of the boxes
+# that make the walls, from the outer face to the cavity's inner corners; the mesh's outside ran
+# through the wall there (a channel through the solid, Euler characteristic -10); now refused
+"$pmsum" validate "$work/hollow-box.off" "$tet" --scale-q 0.1 -d 0.05 --relative --mesh > "$work/hb5.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/hb5.txt" && grep -q "mesh topology     Euler characteristic -8, exact: -8" "$work/hb5.txt"
+then ok; else ko "hollow box at 5%: no channel through a wall"; cat "$work/hb5.txt"; fi
 # knot1 + a tetrahedron of 1/32 at d = 3.5%: two strands of the knot's sum pass 0.56-0.67 d apart,
 # and the advancing front joined them by a neck across the gap (Euler characteristic -2). knot1 is
 # a knotted solid torus, and so is its sum with a small convex solid: Euler characteristic 0. The

@@ -166,8 +166,8 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// The mesh of the boundary that `pipeline` (made coarse to fine, on mp and mq) covers: the
 /// points of covering distance d are reconstructed into `mesh` and checked (check_mesh(), the
 /// no connected part of the sum split (splits_a_part()), no void the sum does not have
-/// (has_false_void()), no second sheet (has_second_sheet()), no neck across free space
-/// (has_neck_across_free_space()), no handle narrower than d nor
+/// (has_false_void()), no second sheet (has_second_sheet()), no neck across free space nor
+/// channel through the solid (has_neck_or_channel()), no handle narrower than d nor
 /// handle or neck a few d round that the sum is not shown to have (has_false_short_handle()),
 /// the points' distance to the mesh and the mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
 /// with the trim curves searched wherever they are (not only where the covering needs them),
@@ -283,7 +283,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                           ms.mesh_to_boundary_bound < dl && !across;
       // Last (they search segments): a void that the sum does not have (mesh_voids.h), two
       // sheets over one part of the boundary (mesh_second_sheet.h), a neck across free space
-      // (mesh_necks.h), a handle the sum is not shown to have (mesh_short_handles.h).
+      // or a channel through the solid (mesh_necks.h), a handle the sum is not shown to have (mesh_short_handles.h).
       const char* refuted = nullptr;
       if (passed && geometry) {
         Cd_filter filter(geometry);
@@ -292,9 +292,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
           refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
         else if (has_second_sheet(mesh, dl, search, pipeline.parallel))
           refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
-        else if (has_neck_across_free_space(mesh, dl, search, [&](const std::array<double, 3>& x) { return filter.is_free_at(x); },
-                                            pipeline.parallel))
-          refuted = "joined two parts of the boundary by a neck across free space";
+        else if (has_neck_or_channel(mesh, dl, search, [&](const std::array<double, 3>& x) { return filter.is_free_at(x); },
+                                     pipeline.parallel))
+          refuted = "joined two parts of the boundary by a neck across free space, or cut a channel through the solid";
         else if (has_false_short_handle(mesh, dl, search, pipeline.parallel))
           refuted = "made a handle or a neck a few times that d round that the sum is not shown to have";
       }
@@ -338,8 +338,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// vertex, or outside it over the vertex, facing its way, as a second sheet over that part of
 /// the boundary (exact segment tests along the vertex's normal: a pocket between two sheets,
 /// a handle the sum may not have), it joins no two parts of the boundary by a neck across free
-/// space (exact segment tests from its triangles into it: where one is wholly outside the sum,
-/// the triangles over free space there must not make a ring), every handle of it narrower than about `d` is one the sum
+/// space nor cuts a channel through the solid (exact segment tests from its triangles into it
+/// and out of it: where one is wholly outside the sum, the triangles over free space there must
+/// not make a ring; inside it, those under the solid), every handle of it narrower than about `d` is one the sum
 /// has (where the mesh within `d/2` of a vertex along its edges is not a disk, a cycle of its
 /// border must go round a tube of the sum: exact segment tests towards the tube's axis and
 /// away from it), every output point
