@@ -43,7 +43,8 @@
 // above: refused at d and at d with every trim cell searched, meshed at d/2 with Euler
 // characteristic 0, the exact one). The hollow box at 5%: refused at d and at d again, meshed at
 // d/2 with Euler characteristic -8. Cost: grates at 5% (thin bars: 2,297 segments chosen out of
-// 3,186 triangles) 1.1 s of segment searches, 0.006 s with the midpoint tested first.
+// 3,186 triangles) 1.1 s of segment searches; with the midpoint tested first the reconstruction
+// stage, its checks included, takes 0.057 s against 0.050 s without the check.
 // Not seen by this test: two membranes over a passage of the sum (a handle lost: each
 // membrane's triangles over free space make a disk of their own).
 
