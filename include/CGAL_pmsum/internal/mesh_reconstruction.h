@@ -233,21 +233,14 @@ crossings_near(const TriangleMesh& mesh, const IsSuspect& suspect)
   return pairs;
 }
 
-/// Removes the faces of `mesh` that intersect another one, with `rings` rings of faces around
-/// them (the faces around their vertices, repeatedly), leaving holes for fill_holes().
-/// `suspects`: if given, only these faces may cross another (crossings_near()); the faces
-/// removed are taken out of it. Returns whether a face intersected another.
-template <class ConcurrencyTag, class TriangleMesh>
-bool cut_self_intersections(TriangleMesh& mesh, int rings,
-                            std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>* suspects)
+/// Removes the faces `cut` of `mesh` with `rings` rings of faces around them (the faces around
+/// their vertices, repeatedly), leaving holes for fill_holes(). The faces removed are taken
+/// out of `suspects` if given.
+template <class TriangleMesh>
+void remove_faces_with_rings(TriangleMesh& mesh, std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor> cut,
+                             int rings, std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>* suspects)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  if (suspects) pairs = crossings_near<ConcurrencyTag>(mesh, [&](face_descriptor f) { return suspects->count(f) > 0; });
-  else CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(mesh, std::back_inserter(pairs));
-  if (pairs.empty()) return false;
-  std::set<face_descriptor> cut;
-  for (const auto& fg : pairs) cut.insert({fg.first, fg.second});
   for (int r = 0; r < rings; ++r) {
     std::set<face_descriptor> grown = cut;
     for (face_descriptor f : cut)
@@ -260,6 +253,43 @@ bool cut_self_intersections(TriangleMesh& mesh, int rings,
     CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
     if (suspects) suspects->erase(f);
   }
+}
+
+/// Removes the faces of `mesh` that intersect another one, with `rings` rings of faces around
+/// them (remove_faces_with_rings()). `suspects`: if given, only these faces may cross another
+/// (crossings_near()); the faces removed are taken out of it. Returns whether a face
+/// intersected another.
+template <class ConcurrencyTag, class TriangleMesh>
+bool cut_self_intersections(TriangleMesh& mesh, int rings,
+                            std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>* suspects)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+  if (suspects) pairs = crossings_near<ConcurrencyTag>(mesh, [&](face_descriptor f) { return suspects->count(f) > 0; });
+  else CGAL::Polygon_mesh_processing::self_intersections<ConcurrencyTag>(mesh, std::back_inserter(pairs));
+  if (pairs.empty()) return false;
+  std::set<face_descriptor> cut;
+  for (const auto& fg : pairs) cut.insert({fg.first, fg.second});
+  remove_faces_with_rings(mesh, std::move(cut), rings, suspects);
+  return true;
+}
+
+/// Removes the faces of `mesh` beside its holes (those fill_holes() left open), with `rings`
+/// rings of faces around them (remove_faces_with_rings()): where the reconstruction folded,
+/// every triangulation of a hole's border may need a side that the faces around already have
+/// (a pentagon whose three diagonals from alternate corners are sides elsewhere: anchor turned
+/// at 1%), and the larger hole has more. `suspects` as in cut_self_intersections(). Returns
+/// whether `mesh` had a hole.
+template <class TriangleMesh>
+bool cut_round_holes(TriangleMesh& mesh, int rings,
+                     std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>* suspects)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::set<face_descriptor> cut;
+  for (auto h : halfedges(mesh))
+    if (is_border(h, mesh)) cut.insert(face(opposite(h, mesh), mesh));
+  if (cut.empty()) return false;
+  remove_faces_with_rings(mesh, std::move(cut), rings - 1, suspects);
   return true;
 }
 
@@ -467,8 +497,9 @@ enum class Triangles_from : std::uint8_t
 };
 
 /// Makes `triangles` (indices into `points`, a d-covering) into `mesh`, oriented to bound a
-/// volume: holes closed, crossings cut and closed again, bubbles removed. Returns the mesh's
-/// checks; the mesh is left empty if the triangles do not form an oriented manifold.
+/// volume: holes closed (those left open cut round and closed again), crossings cut and closed
+/// again, bubbles removed. Returns the mesh's checks; the mesh is left empty if the triangles
+/// do not form an oriented manifold.
 /// Triangles_from::one_delaunay_triangulation with points of double coordinates (the
 /// positions triangulated): only the triangles that fill holes, and those whose boxes meet
 /// theirs, are searched for crossings; else all of them.
@@ -490,11 +521,13 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points, const std::vec
   std::set<face_descriptor> filled;
   fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()), points);
   // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),
-  // cut the crossing triangles with a growing neighbourhood and fill again.
-  // The last search that found no crossing, on the mesh as it is, answers that check.
+  // or a hole is left open, cut the crossing triangles, or those beside the hole, with a
+  // growing neighbourhood and fill again. The last search that found no crossing, on the mesh
+  // as it is, answers that check.
   std::optional<bool> self_intersection_free;
   for (int rings = 1; rings <= 3; ++rings) {
-    if (!cut_self_intersections<ConcurrencyTag>(mesh, rings, delaunay ? &filled : nullptr)) {
+    const bool holes = cut_round_holes(mesh, rings, &filled);
+    if (!cut_self_intersections<ConcurrencyTag>(mesh, rings, delaunay ? &filled : nullptr) && !holes) {
       self_intersection_free = true;
       break;
     }
