@@ -394,6 +394,15 @@ then ok; else ko "knot1 + tetrahedron/32 at 3.5%: no neck across the gap between
 "$pmsum" validate "$data/blocks_turned.off" "$work/generated_cube.off" -d 0.026 --relative --mesh > "$work/bt.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/bt.txt" && grep -q "0 refinements" "$work/bt.txt"
 then ok; else ko "turned blocks + cube: a hole closed after a cut round it"; cat "$work/bt.txt"; fi
+# narrow-tunnel at d = 10%: the advancing front lays lids over the tunnel's mouths, its walls' points
+# inside the mesh, d to 2 d from it. Putting points that far back (tents in the lids, tried for thin
+# plates' ends) gave a mesh without the tunnel (Euler characteristic 2): the level must be refused
+"$pmsum" generate tunnel -o "$work/tunnel.off" > /dev/null
+"$pmsum" generate tunnel-cube -o "$work/tunnel-cube.off" > /dev/null
+"$pmsum" mesh "$work/tunnel.off" "$work/tunnel-cube.off" -d 0.1 --relative -o "$work/tunnel_mesh.off" \
+  --json "$work/tunnel_mesh.json" --quiet
+if [ $? = 0 ] && grep -q '"euler_characteristic": 0' "$work/tunnel_mesh.json"
+then ok; else ko "narrow tunnel at 10%: the tunnel kept"; fi
 # tripod + an octahedron a thousandth of its size at d = 2%: the advancing front once made a mesh
 # that passed every check of the mesh itself with triangles 5 d long across a concave corner, 1.7 d
 # from the exact boundary; now such triangles are refused: a mesh within d of Nef's boundary both
