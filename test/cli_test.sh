@@ -386,10 +386,9 @@ if [ $? = 0 ] && grep -q '"euler_characteristic": 0' "$work/knot_neck.json" && g
    grep -q "neck across free space" "$work/knot_neck.json"
 then ok; else ko "knot1 + tetrahedron/32 at 3.5%: no neck across the gap between strands"; fi
 # blocks turned (data/blocks_turned.off: `pmsum generate blocks` by a random rotation, 17 digits)
-# + a cube at d = 2.6%: the advancing front's mesh had a hole whose every triangulation needed a
-# side the triangles round it already had (a fold); no level closed it (exit 6 after 25 s). Now
-# the triangles beside a hole left open are cut and the hole filled again: the first mesh, within
-# d of Nef's boundary both ways
+# + a cube at d = 2.6%: the advancing front's mesh kept a hole that no filling closed, at every level
+# (exit 6 after 25 s). Now the triangles beside a hole left open are cut and the hole filled again:
+# the first mesh, within d of Nef's boundary both ways
 "$pmsum" generate cube -o "$work/generated_cube.off" > /dev/null
 "$pmsum" validate "$data/blocks_turned.off" "$work/generated_cube.off" -d 0.026 --relative --mesh > "$work/bt.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/bt.txt" && grep -q "0 refinements" "$work/bt.txt"

@@ -277,9 +277,9 @@ bool cut_self_intersections(TriangleMesh& mesh, int rings,
 /// Removes the faces of `mesh` beside its holes (those fill_holes() left open), with `rings`
 /// rings of faces around them (remove_faces_with_rings()): where the reconstruction folded,
 /// every triangulation of a hole's border may need a side that the faces around already have
-/// (a pentagon whose three diagonals from alternate corners are sides elsewhere: anchor turned
-/// at 1%), and the larger hole has more. `suspects` as in cut_self_intersections(). Returns
-/// whether `mesh` had a hole.
+/// (a pentagon whose three diagonals from alternate corners are sides elsewhere: the anchor
+/// turned at random plus an octahedron at 1%), and the larger hole has more. `suspects` as in
+/// cut_self_intersections(). Returns whether `mesh` had a hole.
 template <class TriangleMesh>
 bool cut_round_holes(TriangleMesh& mesh, int rings,
                      std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>* suspects)
