@@ -42,15 +42,20 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 
 def read_off(path):
-    tokens = open(path).read().split()
-    nv, nf = int(tokens[1]), int(tokens[2])
-    vals = tokens[4:]
-    pts = [tuple(map(float, vals[3 * i:3 * i + 3])) for i in range(nv)]
-    k, tris = 3 * nv, []
+    """Points and faces of an OFF file: OFF, COFF, NOFF... (values after a vertex's three
+    coordinates or a face's corners, such as colours, are skipped; # starts a comment)."""
+    lines = [l.split("#")[0].split() for l in open(path)]
+    rows = iter([l for l in lines if l])
+    head = next(rows)
+    if not head[0].endswith("OFF"):
+        raise ValueError("%s: not an OFF file" % path)
+    counts = head[1:] or next(rows)
+    nv, nf = int(counts[0]), int(counts[1])
+    pts = [tuple(map(float, next(rows)[:3])) for _ in range(nv)]
+    tris = []
     for _ in range(nf):
-        n = int(vals[k])
-        tris.append(tuple(int(x) for x in vals[k + 1:k + 1 + n]))
-        k += n + 1
+        row = next(rows)
+        tris.append(tuple(int(x) for x in row[1:1 + int(row[0])]))
     return pts, tris
 
 
