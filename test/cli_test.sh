@@ -393,6 +393,17 @@ then ok; else ko "knot1 + tetrahedron/32 at 3.5%: no neck across the gap between
 "$pmsum" validate "$data/blocks_turned.off" "$work/generated_cube.off" -d 0.026 --relative --mesh > "$work/bt.txt" 2>&1
 if [ $? = 0 ] && grep -q "verdict           OK" "$work/bt.txt" && grep -q "0 refinements" "$work/bt.txt"
 then ok; else ko "turned blocks + cube: a hole closed after a cut round it"; cat "$work/bt.txt"; fi
+# A block with a groove 0.002 wide and 0.03 deep across its top (data/grooved_block.off) + an
+# octahedron at d = 2%: the advancing front lays faces across the groove, from one part of the top
+# face to the other. That was refused as a face over a slit at d and d with every trim cell searched
+# (17 s, d/2 plane by plane); the sum is solid d/2 under the gap: the first mesh, within d of Nef
+"$pmsum" validate "$data/grooved_block.off" "$data/octahedron.off" --scale-q 0.25 -d 0.02 --relative --mesh > "$work/gb.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/gb.txt" && grep -q "0 refinements" "$work/gb.txt"
+then ok; else ko "grooved block + octahedron: faces across a shallow notch kept"; cat "$work/gb.txt"; fi
+"$pmsum" mesh "$data/grooved_block.off" "$data/octahedron.off" --scale-q 0.25 -d 0.02 --relative -o "$work/gb.off" \
+  --json "$work/gb.json" --quiet
+if [ $? = 0 ] && grep -q '"by_planes": false' "$work/gb.json" && grep -q '"refused": ""' "$work/gb.json"
+then ok; else ko "grooved block + octahedron: the advancing front's mesh at d"; fi
 # narrow-tunnel at d = 10%: the advancing front lays lids over the tunnel's mouths, its walls' points
 # inside the mesh, d to 2 d from it. Putting points that far back (tents in the lids, tried for thin
 # plates' ends) gave a mesh without the tunnel (Euler characteristic 2): the level must be refused

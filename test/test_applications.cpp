@@ -1792,17 +1792,56 @@ TEST_CASE("no_face_joining_parts: a face across a slit, not one across a reflex 
   // Two unit cubes 0.05 apart plus a cube of side 0.02: two boxes 0.03 apart, whose faces in
   // the planes y = 0, y = 1.02, z = 0 and z = 1.02 are two parts of each. The hull of all the
   // vertex sums lays faces across the slit, from one part to the other; the left box's
-  // hull does not.
-  const double s = 0.02;
+  // hull does not. On a floor up to z = 0.95, the slit is a notch 0.05 deep: for d = 0.34
+  // the sum is solid d / 2 under the gap, and the hull's faces across it pass.
+  const double s = 0.02, d = 0.34;
+  struct Sum_geometry // (the geometry refers to the operands)
   {
-    const auto [a, b, mp, mq] = operands(slot_blocks(0.05, false), box({0, 0, 0}, {s, s, s}));
+    std::pair<in::Mesh_data, in::Mesh_data> operands;
+    in::Cd_geometry geometry;
+    Sum_geometry(const Soup& p, double s)
+      : operands(cd_operands(box({-s / 2, -s / 2, -s / 2}, {s / 2, s / 2, s / 2}), p)), geometry(operands.first, operands.second) {}
+  };
+  auto free_at = [&](const Soup& p) {
+    return [s, sum = std::make_shared<Sum_geometry>(p, s)](const std::array<double, 3>& x) {
+      return in::Cd_filter(&sum->geometry).is_free_at({x[0] - s / 2, x[1] - s / 2, x[2] - s / 2}); // (Q is [0, s]^3)
+    };
+  };
+  {
+    const Soup slit = slot_blocks(0.05, false);
+    const auto [a, b, mp, mq] = operands(slit, box({0, 0, 0}, {s, s, s}));
     in::Face_cover cover(in::candidate_feature_pairs(a, b, true), a, b);
-    CHECK(in::no_face_joining_parts(hull_of_sums(mp, mq, 1), cover));
-    CHECK(!in::no_face_joining_parts(hull_of_sums(mp, mq, 3), cover));
+    CHECK(in::no_face_joining_parts(hull_of_sums(mp, mq, 1), d, cover, free_at(slit)));
+    CHECK(!in::no_face_joining_parts(hull_of_sums(mp, mq, 3), d, cover, free_at(slit)));
     REQUIRE(cover.set_plane({0, -1, 0}, 0, 1));
     CHECK(cover.joins_separate_parts({{{0.5, 0, 0.5}, {1.6, 0, 0.5}, {0.5, 0, 0.9}}}));
     CHECK(!cover.joins_separate_parts({{{0.5, 0, 0.5}, {1.02, 0, 0.5}, {0.5, 0, 0.9}}}));
     CHECK(!cover.joins_separate_parts({{{0.5, 0, 0.5}, {1.04, 0, 0.5}, {0.5, 0, 0.9}}})); // (a corner off the facets)
+    const auto gaps = cover.gaps_between_parts({{{0.5, 0, 0.5}, {1.6, 0, 0.5}, {0.5, 0, 0.9}}});
+    REQUIRE(gaps.size() == 2); // on the sides from (1.6, 0, 0.5)
+    for (const auto& g : gaps) CHECK(g[0] == Approx(1.035).margin(1e-12));
+  }
+  {
+    Soup notch = box({0, 0, 0}, {2.05, 1, 0.95});
+    notch.append(box({0, 0, 0.95}, {1, 1, 1}));
+    notch.append(box({1.05, 0, 0.95}, {2.05, 1, 1}));
+    const auto [a, b, mp, mq] = operands(notch, box({0, 0, 0}, {s, s, s}));
+    in::Face_cover cover(in::candidate_feature_pairs(a, b, true), a, b);
+    REQUIRE(cover.set_plane({0, 0, 1}, 1 + s, 2));
+    CHECK(cover.joins_separate_parts({{{0.5, 0.5, 1 + s}, {1.6, 0.5, 1 + s}, {0.5, 0.9, 1 + s}}}));
+    const auto gaps = cover.gaps_between_parts({{{0.5, 0.5, 1 + s}, {1.6, 0.5, 1 + s}, {0.5, 0.9, 1 + s}}});
+    CHECK(gaps.size() == 2);
+    const auto notch_free = free_at(notch);
+    CHECK(notch_free({1.035, 0.5, 1}));         // in the notch
+    CHECK(!notch_free({1.035, 0.5, 1 + s - d / 2})); // under it
+    // (the hull's top faces have sides on the sum's edges y = 0 and y = 1 + s: the middle of
+    // the gap there, moved under the face, lies on the sum's boundary, free: refused)
+    Mesh across;
+    const auto v0 = across.add_vertex({0.5, 0.5, 1 + s}), v1 = across.add_vertex({1.6, 0.5, 1 + s}), v2 = across.add_vertex({0.5, 0.9, 1 + s});
+    across.add_face(v0, v1, v2);
+    CHECK(in::no_face_joining_parts(across, d, cover, notch_free));
+    CHECK(!in::no_face_joining_parts(across, 0.06, cover, notch_free)); // (free 0.03 under it)
+    CHECK(!in::no_face_joining_parts(hull_of_sums(mp, mq, 3), d, cover, notch_free));
   }
   // The L-shape plus the cube: its bottom face (z = 0) is one part, with a reflex corner at
   // (1.02, 1.02). A triangle across that corner leaves the facets (no_face_over_hole()

@@ -272,7 +272,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       // the advancing front, never from one lip of a slit in a plane to the other.
       const bool across = ms.checks.valid() && geometry &&
                           (cd ? !no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, level_cover())
-                              : !no_face_joining_parts(mesh, level_cover()));
+                              : !no_face_joining_parts(mesh, dl, level_cover(), [&](const std::array<double, 3>& x) {
+                                  return Cd_filter(geometry).is_free_at(x);
+                                }));
       ms.covering_distance = dl;
       ms.refinements = level.halvings;
       ms.crease_points = creases;
