@@ -153,11 +153,10 @@ public:
   /// the facets too, has its corners on one part.) @pre set_plane() was called.
   bool joins_separate_parts(const std::array<std::array<double, 3>, 3>& corners)
   {
-    if (!m_parts) m_parts = &m_parts_by_plane.try_emplace(m_plane, parts_of_plane()).first->second;
     Plane_parts::Part_list common;
     for (int k = 0; k < 3; ++k) {
       const Plane_parts::Part_list of_corner =
-        m_parts->holding({corners[k][(m_plane.second + 1) % 3], corners[k][(m_plane.second + 2) % 3]});
+        parts().holding({corners[k][(m_plane.second + 1) % 3], corners[k][(m_plane.second + 2) % 3]});
       if (of_corner.empty()) return false; // (not on this plane's facets: nothing known)
       if (k == 0) common = of_corner;
       else {
@@ -176,13 +175,12 @@ public:
   /// @pre set_plane() was called.
   std::vector<std::array<double, 3>> gaps_between_parts(const std::array<std::array<double, 3>, 3>& corners)
   {
-    if (!m_parts) m_parts = &m_parts_by_plane.try_emplace(m_plane, parts_of_plane()).first->second;
     const int x = (m_plane.second + 1) % 3, y = (m_plane.second + 2) % 3;
     std::vector<std::array<double, 3>> out;
     for (int k = 0; k < 3; ++k) {
       const std::array<double, 3>& a = corners[k];
       const std::array<double, 3>& b = corners[(k + 1) % 3];
-      const Plane_parts::Part_list pa = m_parts->holding({a[x], a[y]}), pb = m_parts->holding({b[x], b[y]});
+      const Plane_parts::Part_list pa = parts().holding({a[x], a[y]}), pb = parts().holding({b[x], b[y]});
       Plane_parts::Part_list both;
       std::set_intersection(pa.begin(), pa.end(), pb.begin(), pb.end(), std::back_inserter(both));
       if (pa.empty() || pb.empty() || !both.empty()) continue;
@@ -226,6 +224,13 @@ public:
 private:
   using Key = std::array<std::int64_t, 4>;
   using Plane = std::pair<std::vector<std::size_t>, int>; // (facets, axis dropped)
+
+  /// The parts of the selected plane's facets, made when first asked for.
+  const Plane_parts& parts()
+  {
+    if (!m_parts) m_parts = &m_parts_by_plane.try_emplace(m_plane, parts_of_plane()).first->second;
+    return *m_parts;
+  }
 
   /// The selected plane's facets projected on its axes (rounded), and their parts.
   Plane_parts parts_of_plane() const
