@@ -171,7 +171,8 @@ public:
   /// The middle of each gap between the plane's facets along the sides of this triangle of
   /// the plane whose ends lie on no one part (see joins_separate_parts()): where the side
   /// crosses from one part to another. Along a side, the stretches its facets cover are
-  /// found in doubles; stretches shorter than the parts' tolerance are not gaps.
+  /// found in doubles (Plane_parts::covered_along()); stretches shorter than the parts'
+  /// tolerance are not gaps.
   /// @pre set_plane() was called.
   std::vector<std::array<double, 3>> gaps_between_parts(const std::array<std::array<double, 3>, 3>& corners)
   {
@@ -184,27 +185,7 @@ public:
       Plane_parts::Part_list both;
       std::set_intersection(pa.begin(), pa.end(), pb.begin(), pb.end(), std::back_inserter(both));
       if (pa.empty() || pb.empty() || !both.empty()) continue;
-      std::vector<std::pair<double, double>> covered; // parameters along a -> b
-      for (std::size_t f : m_plane.first) {
-        const std::vector<std::array<double, 3>> c = facet_corners(m_facets[f].pair);
-        double area = 0;
-        for (std::size_t i = 0; i < c.size(); ++i)
-          area += c[i][x] * c[(i + 1) % c.size()][y] - c[(i + 1) % c.size()][x] * c[i][y];
-        if (area == 0) continue;
-        double lo = 0, hi = 1;
-        for (std::size_t i = 0; i < c.size() && lo < hi; ++i) {
-          const auto& c0 = c[i];
-          const auto& c1 = c[(i + 1) % c.size()];
-          // inward normal of side c0 c1: the left one for a counterclockwise polygon
-          const double nx = -(c1[y] - c0[y]) * (area > 0 ? 1 : -1), ny = (c1[x] - c0[x]) * (area > 0 ? 1 : -1);
-          const double at_a = nx * (a[x] - c0[x]) + ny * (a[y] - c0[y]);
-          const double slope = nx * (b[x] - a[x]) + ny * (b[y] - a[y]);
-          if (slope > 0) lo = (std::max)(lo, -at_a / slope);
-          else if (slope < 0) hi = (std::min)(hi, -at_a / slope);
-          else if (at_a < 0) hi = lo;
-        }
-        if (lo < hi) covered.emplace_back(lo, hi);
-      }
+      std::vector<std::pair<double, double>> covered = parts().covered_along({a[x], a[y]}, {b[x], b[y]});
       covered.emplace_back(1, 1); // (the ends lie on parts, within the tolerance)
       std::sort(covered.begin(), covered.end());
       const double length = std::sqrt((b[x] - a[x]) * (b[x] - a[x]) + (b[y] - a[y]) * (b[y] - a[y]));

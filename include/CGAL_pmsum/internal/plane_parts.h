@@ -62,6 +62,27 @@ public:
     return out;
   }
 
+  /// The stretches of the segment a b that the polygons cover, as parameters along it (0 at
+  /// a, 1 at b), one per polygon it crosses, in no order.
+  std::vector<std::pair<double, double>> covered_along(const Point& a, const Point& b) const
+  {
+    std::vector<std::pair<double, double>> out;
+    for (const Polygon& g : m_polygons) {
+      double lo = 0, hi = 1;
+      for (std::size_t k = 0; k < g.corners.size() && lo < hi; ++k) {
+        const Point &c0 = g.corners[k], &c1 = g.corners[(k + 1) % g.corners.size()];
+        const double nx = c0[1] - c1[1], ny = c1[0] - c0[0]; // inward (left of c0 c1)
+        const double at_a = nx * (a[0] - c0[0]) + ny * (a[1] - c0[1]);
+        const double slope = nx * (b[0] - a[0]) + ny * (b[1] - a[1]);
+        if (slope > 0) lo = (std::max)(lo, -at_a / slope);
+        else if (slope < 0) hi = (std::min)(hi, -at_a / slope);
+        else if (at_a < 0) hi = lo;
+      }
+      if (lo < hi) out.emplace_back(lo, hi);
+    }
+    return out;
+  }
+
 private:
   /// Counterclockwise, with its box (x min, y min, x max, y max).
   struct Polygon
