@@ -1433,7 +1433,10 @@ TEST_CASE("has_neck_or_channel: two blocks joined by a neck across a gap, the su
   // Where the sum is the whole block [0, 4]^2 x [0, 2.5], the first mesh's outside round the neck
   // is a channel through the solid: the segments out of the mesh from A's top round the neck to
   // B's bottom lie inside the sum, and the triangles under the solid there make a ring (the
-  // hollow box + tetrahedron/10 at 5% was meshed so).
+  // hollow box + tetrahedron/10 at 5% was meshed so). The two blocks apart where the sum has
+  // the neck: the segments out of A's top over the neck, up to B's bottom, lie inside the sum, from
+  // one patch of triangles under the solid to another (CGAL's cheese + octahedron/64 at 1.5%: a
+  // rod of the sum 0.6-1.2 d thick cut through, its two caps 0.15 d apart).
   using namespace CGAL::Pmsum::internal;
   Soup dumbbell;
   for (const auto& [z, a] : {std::pair{0., 0.}, std::pair{1., 0.}, std::pair{1., 1.5}, std::pair{1.5, 1.5}, std::pair{1.5, 0.},
@@ -1462,7 +1465,8 @@ TEST_CASE("has_neck_or_channel: two blocks joined by a neck across a gap, the su
   apart.append(box({0, 0, 1.5}, {4, 4, 2.5}));
   struct Case { const char* what; const Soup& mesh; const Soup& q; bool neck; }; // (neck: or channel)
   for (const Case& k : {Case{"the neck, across the gap", dumbbell, blocks, true}, Case{"the neck, the sum's", dumbbell, with_bar, false},
-                        Case{"the blocks apart", apart, blocks, false}, Case{"a channel round the neck", dumbbell, whole, true}}) {
+                        Case{"the blocks apart", apart, blocks, false}, Case{"a channel round the neck", dumbbell, whole, true},
+                        Case{"the sum's neck cut through", apart, with_bar, true}}) {
     INFO(k.what);
     const Mesh m = to_mesh<Mesh>(subdivided(k.mesh, 2));
     REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
@@ -1473,6 +1477,22 @@ TEST_CASE("has_neck_or_channel: two blocks joined by a neck across a gap, the su
     auto free_at = [&](const std::array<double, 3>& x) { return filter.is_free_at(x); };
     CHECK(has_neck_or_channel(m, 0.8, search, free_at, false) == k.neck);
     CHECK(has_neck_or_channel(m, 0.8, search, free_at, true) == k.neck); // (chosen on TBB's threads)
+  }
+  // Two membranes over a passage: the block [0, 4]^3 with the tunnel [1.5, 2.5]^2 along z
+  // (tunnel_block()) plus the cube of half-side 0.05 meshed whole, at d = 2.2. The segments from
+  // the top over the tunnel into the mesh reach the bottom through free space, from one disk of
+  // triangles over free space to another, and the rays across their middles meet the tunnel's
+  // walls before the mesh: refused. The mesh with the tunnel, or the sum without it, is not.
+  const double e = 0.05;
+  const Mesh whole_block = to_mesh<Mesh>(subdivided(box({-e, -e, -e}, {4 + e, 4 + e, 4 + e}), 3));
+  for (const bool tunnel : {true, false}) {
+    INFO((tunnel ? "the sum with the tunnel" : "the sum without it"));
+    const auto operands = cd_operands(box({-e, -e, -e}, {e, e, e}), tunnel ? pmsum_shapes::tunnel_block() : box({0, 0, 0}, {4, 4, 4}));
+    const Cd_geometry geometry(operands.first, operands.second);
+    Cd_filter filter(&geometry);
+    Segment_search search(filter);
+    auto free_at = [&](const std::array<double, 3>& x) { return filter.is_free_at(x); };
+    CHECK(has_neck_or_channel(whole_block, 2.2, search, free_at, false) == tunnel);
   }
 }
 
