@@ -479,8 +479,9 @@ Written_mesh write_sum_mesh(const Sum_input& in, Output_file& file);
 /// Writes to `file` a closed mesh of the volume swept by P along `path` (CGAL::point_sweep_mesh()).
 Written_mesh write_sweep_mesh(const Mesh& P, const std::vector<K::Point_3>& path, double d, int threads,
                               Output_file& file);
-/// The JSON fields of a mesh's sizes and checks (mesh.cpp).
-Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms);
+/// The JSON fields of a mesh's sizes and checks (mesh.cpp): "made" and "error" first; if
+/// `error` is not empty (no mesh was made), only those.
+Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& error = "");
 /// Writes `mesh` in the format of its extension (mesh.cpp).
 void write_mesh(Output_file& file, const Mesh& mesh);
 

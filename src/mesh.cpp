@@ -40,10 +40,12 @@ std::string mesh_note(const CGAL::Pmsum::Mesh_statistics& ms)
 
 } // namespace
 
-Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms)
+Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& error)
 {
-  const CGAL::Pmsum::Mesh_checks& c = ms.checks;
   Json j;
+  j.boolean("made", error.empty()).str("error", error);
+  if (!error.empty()) return j; // (the checks are those of the last mesh refused)
+  const CGAL::Pmsum::Mesh_checks& c = ms.checks;
   j.integer("vertices", ms.vertices).integer("triangles", ms.triangles).num("covering_distance", ms.covering_distance)
     .integer("refinements", std::size_t(ms.refinements)).boolean("crease_points", ms.crease_points).boolean("by_planes", ms.by_planes).boolean("closed", c.closed).boolean("manifold", c.manifold)
     .boolean("self_intersection_free", c.self_intersection_free).boolean("bounds_a_volume", c.bounds_a_volume)
@@ -108,14 +110,15 @@ const std::string mesh_help = std::string(
   "within D). If the mesh made at D fails a check, it is made again at D with the trim\n"
   "curves searched where the covering does not need them, then the sum is recomputed at D/2,\n"
   "then D/4 (each with and without every point on a sharp crease of the sum kept); if no\n"
-  "valid mesh is made, nothing is written and the exit code is 6.\n"
+  "valid mesh is made, no mesh is written (the JSON summary is, with \"made\": false and\n"
+  "the error) and the exit code is 6.\n"
   "\n"
   "  -o OUT                 .off, .obj (17 digits), .ply (binary doubles) or .stl (binary:\n"
   "                         coordinates rounded to float)\n"
   "  --json FILE            write a summary: the mesh's checks and sizes, the d used, the\n"
   "                         largest distance from an output point to the mesh and the bound it\n"
   "                         proves on the exact boundary's distance, seconds of the sum and of\n"
-  "                         the reconstruction\n"
+  "                         the reconstruction; written also when no mesh is made\n"
   "The options of sum follow, but --all-candidates, --no-cd-filter, --no-trim-points,\n"
   "--no-islands and --levels.\n") + sum_options_help;
 
@@ -139,19 +142,28 @@ int command_mesh(int argc, char** argv)
   const auto t_start = std::chrono::steady_clock::now();
   const Sum_input in = agreed([&] { return read_sum_input(args); });
   CGAL::Pmsum::Mesh_statistics ms;
-  const Mesh mesh = compute_mesh(in, ms);
-  const auto t_write = std::chrono::steady_clock::now();
-  write_mesh(files["-o"], mesh);
-  const double write_seconds = seconds_since(t_write);
-
-  if (args.has("--json")) {
+  // The JSON summary is written whether the mesh is made or not (then "made": false, the
+  // error, and the counters of the last sum computed); the mesh only if it is made.
+  auto summarize = [&](const std::string& error, double write_seconds) {
+    if (!args.has("--json")) return;
     Json seconds;
     seconds.num("read", in.read_seconds).num("sum", ms.seconds_sum).num("reconstruction", ms.seconds_mesh)
       .num("write", write_seconds).num("total", seconds_since(t_start));
     Json j = sum_summary(in, ms.sum);
-    j.str("command", "mesh").str("output", out_path).object("mesh", mesh_summary(ms)).object("seconds", seconds);
+    j.str("command", "mesh").str("output", error.empty() ? out_path : "").object("mesh", mesh_summary(ms, error))
+      .object("seconds", seconds);
     write_json(files["--json"], j);
+  };
+  Mesh mesh;
+  try {
+    mesh = compute_mesh(in, ms);
+  } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
+    summarize(e.what(), 0);
+    throw;
   }
+  const auto t_write = std::chrono::steady_clock::now();
+  write_mesh(files["-o"], mesh);
+  summarize("", seconds_since(t_write));
   if (!in.quiet) {
     if (!ms.refused.empty()) std::cerr << "pmsum: note: refused first: " << ms.refused << "\n";
     std::cerr << "pmsum: " << mesh_note(ms) << " written to " << out_path << " (" << std::setprecision(3)

@@ -256,9 +256,8 @@ int command_validate(int argc, char** argv)
     Json seconds;
     seconds.num("ours", ours_seconds).num("nef", ref->seconds()).num("checks", check_seconds);
     if (args.flag("--mesh")) {
-      Json m = mesh_summary(ms);
-      m.boolean("made", mesh_error.empty()).str("error", mesh_error)
-        .num("mesh_to_exact_over_d", distance.mesh_to_surface / in.d)
+      Json m = mesh_summary(ms, mesh_error);
+      m.num("mesh_to_exact_over_d", distance.mesh_to_surface / in.d)
         .num("exact_to_mesh_over_d", distance.surface_to_mesh / in.d).integer("mesh_samples", distance.mesh_samples)
         .integer("exact_samples", distance.surface_samples)
         .add("exact_euler_characteristic", exact_euler ? std::to_string(*exact_euler) : "null").boolean("ok", mesh_ok);

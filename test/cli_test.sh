@@ -327,7 +327,8 @@ for f in tet.ply pocket.off path.txt cube.off; do cmp -s "$work/$f" "$work/$f.co
 # every edge of it is on exactly two triangles (closed, manifold)
 "$pmsum" mesh "$cube" "$tet" -d 0.2 -o "$work/m.off" --json "$work/m.json" --quiet
 if [ $? = 0 ] && grep -q '"closed": true' "$work/m.json" && grep -q '"self_intersection_free": true' "$work/m.json" \
-   && grep -q '"shells": 1,' "$work/m.json" && grep -q '"reconstruction"' "$work/m.json"; then ok; else ko "mesh"; cat "$work/m.json"; fi
+   && grep -q '"shells": 1,' "$work/m.json" && grep -q '"reconstruction"' "$work/m.json" \
+   && grep -q '"made": true' "$work/m.json"; then ok; else ko "mesh"; cat "$work/m.json"; fi
 if awk 'NR == 2 { nv = $1; nf = $2 } NR > 2 + nv && NF == 4 { f++; for (i = 2; i <= 4; i++) { a = $i; b = $(i % 3 + 2);
         e[a < b ? a " " b : b " " a]++ } }
         END { for (k in e) if (e[k] != 2) bad = 1; exit bad || f != nf || f < 100 }' "$work/m.off" \
@@ -355,6 +356,16 @@ expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work
 expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
 expect_fail 2 "trim and island points"   -- validate "$cube" "$tet" -d 0.2 --mesh --no-islands
 expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
+# a mesh that cannot be made (the narrow tunnel at a d wider than its block is thick: the unit
+# test "mesh that cannot be made"): exit 6, no mesh written, the JSON summary written with
+# "made": false and the error
+"$pmsum" generate tunnel -o "$work/tunnel.off" > /dev/null && "$pmsum" generate tunnel-cube -o "$work/tunnel-cube.off" > /dev/null
+"$pmsum" mesh "$work/tunnel.off" "$work/tunnel-cube.off" -d 1.6 -o "$work/nomesh.off" --json "$work/nomesh.json" --quiet 2> "$work/nomesh.txt"
+if [ $? = 6 ] && [ ! -e "$work/nomesh.off" ] && grep -q '"made": false' "$work/nomesh.json" \
+   && grep -q '"error": "no valid mesh of the sum.s boundary could be made: the reconstruction at d = 1.6' "$work/nomesh.json" \
+   && grep -q '"output": ""' "$work/nomesh.json" && grep -Eq '"reconstruction": ([1-9]|0\.0*[1-9])' "$work/nomesh.json" \
+   && grep -q "no valid mesh" "$work/nomesh.txt" && [ -z "$(ls -A "$work" | grep '^\.pmsum-')" ]
+then ok; else ko "mesh that cannot be made: exit 6, the JSON with made false"; cat "$work/nomesh.txt" "$work/nomesh.json"; fi
 # a slab far thinner than the points' spacing: meshed at d, the triangles from one side of the slab
 # to the other refused (before, plane by plane from the crease points of the first refinement),
 # within rounding of the exact box (validate: exit 0, within d both ways)
