@@ -480,10 +480,25 @@ Written_mesh write_sum_mesh(const Sum_input& in, Output_file& file);
 Written_mesh write_sweep_mesh(const Mesh& P, const std::vector<K::Point_3>& path, double d, int threads,
                               Output_file& file);
 /// The JSON fields of a mesh's sizes and checks (mesh.cpp): "made" and "error" first; if
-/// `error` is not empty (no mesh was made), only those.
+/// `error` is not empty (no mesh was made), only those (mesh_failure_summary()).
 Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& error = "");
+/// The JSON fields of a mesh that could not be made: "made" false and the error (mesh.cpp).
+Json mesh_failure_summary(const std::string& error);
 /// Writes `mesh` in the format of its extension (mesh.cpp).
 void write_mesh(Output_file& file, const Mesh& mesh);
+/// `make()` (a mesh writer: write_sum_mesh(), write_sweep_mesh()); if it makes no valid mesh,
+/// `failed` is given the mesh's JSON object (mesh_summary() of the error: "made" false) before
+/// the error goes on (exit code 6), so that a summary can still be written.
+template <class Make, class Failed>
+Written_mesh written_or_summarized(Make&& make, Failed&& failed)
+{
+  try {
+    return make();
+  } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
+    failed(mesh_failure_summary(e.what()));
+    throw;
+  }
+}
 
 inline std::vector<Oriented_point> oriented_points(const std::vector<Record>& records)
 {

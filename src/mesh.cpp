@@ -40,11 +40,18 @@ std::string mesh_note(const CGAL::Pmsum::Mesh_statistics& ms)
 
 } // namespace
 
-Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& error)
+Json mesh_failure_summary(const std::string& error)
 {
   Json j;
-  j.boolean("made", error.empty()).str("error", error);
-  if (!error.empty()) return j; // (the checks are those of the last mesh refused)
+  j.boolean("made", false).str("error", error);
+  return j;
+}
+
+Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& error)
+{
+  if (!error.empty()) return mesh_failure_summary(error); // (ms.checks: those of the last mesh refused)
+  Json j;
+  j.boolean("made", true).str("error", "");
   const CGAL::Pmsum::Mesh_checks& c = ms.checks;
   j.integer("vertices", ms.vertices).integer("triangles", ms.triangles).num("covering_distance", ms.covering_distance)
     .integer("refinements", std::size_t(ms.refinements)).boolean("crease_points", ms.crease_points).boolean("by_planes", ms.by_planes).boolean("closed", c.closed).boolean("manifold", c.manifold)

@@ -183,6 +183,18 @@ int command_offset(int argc, char** argv)
   std::vector<Oriented_point> points;
   CGAL::Pmsum::Statistics stats;
   std::optional<Written_mesh> written;
+  // The summary (--json), also when no mesh is made (its "mesh": "made" false and the error).
+  auto summarize = [&](std::size_t output_points, const Json* mesh) {
+    if (!args.has("--json")) return;
+    Json j;
+    j.str("command", "offset").str("input", args.positional[0]).boolean("erode", args.flag("--erode"))
+      .str("structuring_element", args.flag("--cube") ? "cube" : "icosphere").num("r", r)
+      .num("ball_inradius", inner).integer("ball_faces", B.number_of_faces()).num("d", d)
+      .integer("output_points", output_points);
+    if (mesh) j.object("mesh", *mesh);
+    j.num("seconds", seconds_since(start));
+    write_json(files["--json"], j);
+  };
   if (args.flag("--erode")) {
     if (!CGAL::is_closed(P)) throw Error("--erode needs a closed mesh");
     std::vector<K::Point_3> pts;
@@ -195,20 +207,12 @@ int command_offset(int argc, char** argv)
     in.d = d;
     in.quiet = quiet;
     if (args.has("--threads")) in.threads = int(args.number("--threads"));
-    if (as_mesh) written = write_sum_mesh(in, files["-o"]);
+    if (as_mesh) written = written_or_summarized([&] { return write_sum_mesh(in, files["-o"]); }, [&](const Json& m) { summarize(0, &m); });
     else points = oriented_points(compute_sum(in, stats));
   }
   if (!as_mesh) write_points(files["-o"], points);
-  if (args.has("--json")) {
-    Json j;
-    j.str("command", "offset").str("mesh", args.positional[0]).boolean("erode", args.flag("--erode"))
-      .str("structuring_element", args.flag("--cube") ? "cube" : "icosphere").num("r", r)
-      .num("ball_inradius", inner).integer("ball_faces", B.number_of_faces()).num("d", d);
-    if (written) j.integer("output_points", written->sum.output_points).object("mesh", written->summary);
-    else j.integer("output_points", points.size());
-    j.num("seconds", seconds_since(start));
-    write_json(files["--json"], j);
-  }
+  if (written) summarize(written->sum.output_points, &written->summary);
+  else summarize(points.size(), nullptr);
   if (!quiet)
     std::cerr << "pmsum: " << (written ? written->note : std::to_string(points.size()) + " points") << " written to "
               << out_path << "; every " << (written ? "vertex" : "point") << " at distance in ["
@@ -329,8 +333,20 @@ int command_sweep(int argc, char** argv)
   CGAL::Pmsum::Statistics stats;
   std::optional<Written_mesh> written;
   const int threads = args.has("--threads") ? int(args.number("--threads")) : 0;
+  // The summary (--json), also when no mesh is made (its "mesh": "made" false and the error).
+  auto summarize = [&](const Json* mesh) {
+    if (!args.has("--json")) return;
+    Json j;
+    j.str("command", "sweep").str("input", args.positional[0]).str("path", args.values.at("--path"))
+      .integer("path_points", path.size()).num("d", d).integer("candidates", stats.candidates)
+      .integer("cd_queries", stats.cd_queries).integer("output_points", stats.output_points);
+    if (mesh) j.object("mesh", *mesh);
+    j.num("seconds", seconds_since(start));
+    write_json(files["--json"], j);
+  };
   if (as_mesh) {
-    written = write_sweep_mesh(P, path, d, threads, files["-o"]);
+    written = written_or_summarized([&] { return write_sweep_mesh(P, path, d, threads, files["-o"]); },
+                                    [&](const Json& m) { summarize(&m); });
     stats = written->sum;
   } else {
     with_threads(threads, [&](auto tag) {
@@ -340,15 +356,7 @@ int command_sweep(int argc, char** argv)
     for (const auto& p : pts) out.push_back({{p.x(), p.y(), p.z()}, {0, 0, 0}});
     write_points(files["-o"], out);
   }
-  if (args.has("--json")) {
-    Json j;
-    j.str("command", "sweep").str("mesh", args.positional[0]).str("path", args.values.at("--path"))
-      .integer("path_points", path.size()).num("d", d).integer("candidates", stats.candidates)
-      .integer("cd_queries", stats.cd_queries).integer("output_points", stats.output_points);
-    if (written) j.object("mesh", written->summary);
-    j.num("seconds", seconds_since(start));
-    write_json(files["--json"], j);
-  }
+  summarize(written ? &written->summary : nullptr);
   if (!args.flag("--quiet"))
     std::cerr << "pmsum: " << (written ? written->note : std::to_string(pts.size()) + " points") << " written to "
               << out_path << "\n";

@@ -142,9 +142,18 @@ then ok; else ko "offset --mesh: vertex distances"; fi
 # cut off by the reconstruction at every refinement, and refused: see the manual's limits)
 "$pmsum" generate ellipsoid -o "$work/ellipsoid.off"
 "$pmsum" sweep "$work/ellipsoid.off" --path "$work/path.txt" -d 0.03 --mesh -o "$work/sweepm.off" --json "$work/sweepm.json" --quiet \
-  && grep -q '"closed": true' "$work/sweepm.json" && grep -q '"shells": 1,' "$work/sweepm.json" && ok || ko "sweep --mesh"
+  && grep -q '"closed": true' "$work/sweepm.json" && grep -q '"shells": 1,' "$work/sweepm.json" \
+  && [ "$(grep -c '"mesh":' "$work/sweepm.json")" = 1 ] && ok || ko "sweep --mesh"
 if off_vertices "$work/sweepm.off" | awk '{ if ($1 < -0.2 - 1e-9 || $1 > 1.2 + 1e-9 || $2 < -0.15 - 1e-9 || $2 > 0.15 + 1e-9 || $3 < -0.1 - 1e-9 || $3 > 0.1 + 1e-9) bad = 1; n++ } END { exit bad || n == 0 }'
 then ok; else ko "sweep --mesh: vertex bounds"; fi
+# an offset whose mesh cannot be made (the tunnel block's tunnel left 0.002 wide by the cube
+# of half-side 0.499, at d = 1.6): exit 6, no mesh, the JSON summary with "made": false
+"$pmsum" generate tunnel -o "$work/tunnel.off" > /dev/null
+"$pmsum" offset "$work/tunnel.off" -r 0.499 --cube -d 1.6 --mesh -o "$work/offno.off" --json "$work/offno.json" --quiet 2> /dev/null
+if [ $? = 6 ] && [ ! -e "$work/offno.off" ] && grep -q '"command": "offset"' "$work/offno.json" && grep -q '"made": false' "$work/offno.json" \
+   && grep -q '"error": "no valid mesh of the sum.s boundary could be made' "$work/offno.json" && grep -q '"seconds"' "$work/offno.json" \
+   && [ "$(grep -c '"mesh":' "$work/offno.json")" = 1 ] && grep -q '"input": ".*tunnel.off"' "$work/offno.json"
+then ok; else ko "offset --mesh that cannot be made: exit 6, the JSON with made false"; cat "$work/offno.json"; fi
 expect_fail 2 "not of an erosion"            -- offset "$cube" -r 0.1 -d 0.05 --mesh --erode -o "$work/out.off"
 expect_fail 2 ".off, .obj, .ply or .stl"     -- offset "$cube" -r 0.1 -d 0.05 --mesh -o "$work/out.xyz"
 expect_fail 2 ".off, .obj, .ply or .stl"     -- sweep "$cube" --path "$work/path.txt" -d 0.1 --mesh -o "$work/out.xyz"
@@ -359,7 +368,7 @@ expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work
 # a mesh that cannot be made (the narrow tunnel at a d wider than its block is thick: the unit
 # test "mesh that cannot be made"): exit 6, no mesh written, the JSON summary written with
 # "made": false and the error
-"$pmsum" generate tunnel -o "$work/tunnel.off" > /dev/null && "$pmsum" generate tunnel-cube -o "$work/tunnel-cube.off" > /dev/null
+"$pmsum" generate tunnel-cube -o "$work/tunnel-cube.off" > /dev/null
 "$pmsum" mesh "$work/tunnel.off" "$work/tunnel-cube.off" -d 1.6 -o "$work/nomesh.off" --json "$work/nomesh.json" --quiet 2> "$work/nomesh.txt"
 if [ $? = 6 ] && [ ! -e "$work/nomesh.off" ] && grep -q '"made": false' "$work/nomesh.json" \
    && grep -q '"error": "no valid mesh of the sum.s boundary could be made: the reconstruction at d = 1.6' "$work/nomesh.json" \
