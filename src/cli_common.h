@@ -486,16 +486,16 @@ Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& err
 Json mesh_failure_summary(const std::string& error);
 /// Writes `mesh` in the format of its extension (mesh.cpp).
 void write_mesh(Output_file& file, const Mesh& mesh);
-/// `make()` (a mesh writer: write_sum_mesh(), write_sweep_mesh()); if it makes no valid mesh,
-/// `failed` is given the mesh's JSON object (mesh_summary() of the error: "made" false) before
-/// the error goes on (exit code 6), so that a summary can still be written.
+/// `make()` (a mesh maker: compute_mesh(), write_sum_mesh(), write_sweep_mesh()); if it makes
+/// no valid mesh, `failed(error)` first (so that a summary can still be written), then the error
+/// goes on (exit code 6).
 template <class Make, class Failed>
-Written_mesh written_or_summarized(Make&& make, Failed&& failed)
+decltype(auto) on_mesh_failure(Make&& make, Failed&& failed)
 {
   try {
     return make();
   } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
-    failed(mesh_failure_summary(e.what()));
+    failed(std::string(e.what()));
     throw;
   }
 }

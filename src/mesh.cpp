@@ -161,13 +161,7 @@ int command_mesh(int argc, char** argv)
       .object("seconds", seconds);
     write_json(files["--json"], j);
   };
-  Mesh mesh;
-  try {
-    mesh = compute_mesh(in, ms);
-  } catch (const CGAL::Pmsum::Mesh_reconstruction_failed& e) {
-    summarize(e.what(), 0);
-    throw;
-  }
+  const Mesh mesh = on_mesh_failure([&] { return compute_mesh(in, ms); }, [&](const std::string& error) { summarize(error, 0); });
   const auto t_write = std::chrono::steady_clock::now();
   write_mesh(files["-o"], mesh);
   summarize("", seconds_since(t_write));

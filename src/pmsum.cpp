@@ -207,7 +207,11 @@ int command_offset(int argc, char** argv)
     in.d = d;
     in.quiet = quiet;
     if (args.has("--threads")) in.threads = int(args.number("--threads"));
-    if (as_mesh) written = written_or_summarized([&] { return write_sum_mesh(in, files["-o"]); }, [&](const Json& m) { summarize(0, &m); });
+    if (as_mesh)
+      written = on_mesh_failure([&] { return write_sum_mesh(in, files["-o"]); }, [&](const std::string& error) {
+        const Json m = mesh_failure_summary(error);
+        summarize(0, &m);
+      });
     else points = oriented_points(compute_sum(in, stats));
   }
   if (!as_mesh) write_points(files["-o"], points);
@@ -345,8 +349,10 @@ int command_sweep(int argc, char** argv)
     write_json(files["--json"], j);
   };
   if (as_mesh) {
-    written = written_or_summarized([&] { return write_sweep_mesh(P, path, d, threads, files["-o"]); },
-                                    [&](const Json& m) { summarize(&m); });
+    written = on_mesh_failure([&] { return write_sweep_mesh(P, path, d, threads, files["-o"]); }, [&](const std::string& error) {
+      const Json m = mesh_failure_summary(error);
+      summarize(&m);
+    });
     stats = written->sum;
   } else {
     with_threads(threads, [&](auto tag) {
