@@ -365,11 +365,11 @@ expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work
 expect_fail 2 "needs --mesh"             -- validate "$cube" "$tet" -d 0.2 --save-mesh "$work/out.off"
 expect_fail 2 "trim and island points"   -- validate "$cube" "$tet" -d 0.2 --mesh --no-islands
 expect_fail 1 "no such directory"        -- mesh "$cube" "$tet" -d 0.2 -o "$work/missing/out.off"
-# a mesh that cannot be made (the narrow tunnel at a d wider than its block is thick: the unit
-# test "mesh that cannot be made"): exit 6, no mesh written, the JSON summary written with
-# "made": false and the error
-"$pmsum" generate tunnel-cube -o "$work/tunnel-cube.off" > /dev/null
-"$pmsum" mesh "$work/tunnel.off" "$work/tunnel-cube.off" -d 1.6 -o "$work/nomesh.off" --json "$work/nomesh.json" --quiet 2> "$work/nomesh.txt"
+# a mesh that cannot be made (the tunnel block + a cube of half-side 0.499, its tunnel left
+# 0.002 wide, at a d wider than the block is thick: the unit test "mesh that cannot be made"):
+# exit 6, no mesh written, the JSON summary written with "made": false and the error
+printf 'OFF\n8 12 0\n-0.499 -0.499 -0.499\n0.499 -0.499 -0.499\n-0.499 0.499 -0.499\n0.499 0.499 -0.499\n-0.499 -0.499 0.499\n0.499 -0.499 0.499\n-0.499 0.499 0.499\n0.499 0.499 0.499\n3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n' > "$work/box499.off"
+"$pmsum" mesh "$work/tunnel.off" "$work/box499.off" -d 1.6 -o "$work/nomesh.off" --json "$work/nomesh.json" --quiet 2> "$work/nomesh.txt"
 if [ $? = 6 ] && [ ! -e "$work/nomesh.off" ] && grep -q '"made": false' "$work/nomesh.json" \
    && grep -q '"error": "no valid mesh of the sum.s boundary could be made: the reconstruction at d = 1.6' "$work/nomesh.json" \
    && grep -q '"output": ""' "$work/nomesh.json" && grep -Eq '"reconstruction": ([1-9]|0\.0*[1-9])' "$work/nomesh.json" \

@@ -613,6 +613,83 @@ TEST_CASE("convex planar patches: a box's faces are one patch each, and their cr
   CHECK(by_witness > 10);
 }
 
+TEST_CASE("cells on a wall where two parts of the sum touch face to face: in one patch pair's crossing set once perturbed", "[filters][islands]")
+{
+  // -P (the filter's translations are -P + Q): two unit boxes 0.5 apart along x; Q: a box 0.5
+  // wide. Their sums with Q, [0, 1.5] and [1.5, 3] along x, touch on the plane x = 1.5: inside
+  // the sum, but on the border of every patch pair's crossing set, so intervals never hold a
+  // cell there. Perturbed (here along the axes), the wall's points lie in one box's sum: of
+  // the pairs on whose border the cell lies (no corner certainly outside: Crossing_slabs::
+  // leaves()), one crosses at each exact corner (Cd_filter::patch_pair_crosses_at(), the
+  // island search's test), and then no point of the cell may be free. On the sum's faces
+  // x = 0 and x = 3, perturbed outward on one of them, a pair holds exactly where the corners
+  // are not free.
+  using namespace CGAL::Pmsum::internal;
+  Soup ps = box({-1, -1, -1}, {0, 0, 0});
+  ps.append(box({-2.5, -1, -1}, {-1.5, 0, 0}));
+  Cd_case cd(ps, box({0, 0, 0}, {0.5, 0.5, 0.5}));
+  Cd_filter& filter = cd.filter;
+  auto free_at = [&](const Exact_point& x) {
+    filter.set_point(x, nullptr, 0);
+    return filter.is_free_here();
+  };
+  CGAL::Random rng(7);
+  std::size_t covered_on_wall = 0, covered_outside = 0, free_outside = 0;
+  for (const double wall : {0., 1.5, 3.}) {
+    for (int k = 0; k < 60; ++k) {
+      // a small triangle of translations on the plane x = wall, within y, z in (0, 1.5)
+      std::array<std::array<double, 3>, 3> t;
+      const double y = rng.get_double(0.05, 1.45), z = rng.get_double(0.05, 1.45);
+      for (auto& c : t) c = {wall, y + rng.get_double(-0.04, 0.04), z + rng.get_double(-0.04, 0.04)};
+      std::array<Exact_point, 3> x;
+      std::array<Vec3<Interval>, 3> T;
+      for (int i = 0; i < 3; ++i) {
+        x[i] = {{Exact_nt(t[i][0]), Exact_nt(t[i][1]), Exact_nt(t[i][2])}, Exact_nt(1)};
+        T[i] = {Interval(t[i][0]), Interval(t[i][1]), Interval(t[i][2])};
+      }
+      INFO("plane x = " << wall << ", cell near y = " << y << ", z = " << z);
+      // the patch pairs met (as Island_search::island_point()'s traversal): none holds T by
+      // intervals; those that T may lie on the border of, is one in it once perturbed?
+      std::set<std::pair<Index, Index>> met;
+      filter.for_each_overlapping_pair(hull(hull(T[0], T[1]), T[2]), [&](Index u, Index v) {
+        met.insert({filter.moving_patch(u), filter.static_patch(v)});
+        return false;
+      });
+      bool covered = false;
+      for (const auto& [a, b] : met) {
+        bool touching = false;
+        {
+          CGAL::Protect_FPU_rounding<true> guard;
+          const auto [slabs, where] = filter.patch_crossing_slabs(a, b, T);
+          CHECK(where != Crossing_slabs::Where::inside);
+          touching = where == Crossing_slabs::Where::border && slabs.known && !slabs.leaves(T);
+        }
+        covered = covered || (touching && filter.patch_pair_crosses_at(a, b, {{&x[0], {}}, {&x[1], {}}, {&x[2], {}}}, nullptr, 0));
+      }
+      if (wall == 1.5) {
+        CHECK(covered);
+        covered_on_wall += covered;
+      } else {
+        const bool corner_free = free_at(x[0]);
+        CHECK(covered == !corner_free);
+        covered_outside += covered;
+        free_outside += corner_free;
+      }
+      if (!covered) continue;
+      for (int a = 0; a <= 4; ++a)
+        for (int b = 0; a + b <= 4; ++b) {
+          Exact_point m;
+          for (int c = 0; c < 3; ++c) m.X[c] = (4 - a - b) * x[0].X[c] + a * x[1].X[c] + b * x[2].X[c];
+          m.W = Exact_nt(4);
+          CHECK_FALSE(free_at(m));
+        }
+    }
+  }
+  CHECK(covered_on_wall == 60);
+  CHECK(covered_outside == 60); // one outer face is perturbed inward, the other outward
+  CHECK(free_outside == 60);
+}
+
 TEST_CASE("on a small grid, double arithmetic decides the predicates as exact arithmetic does", "[filters][exact]")
 {
   // Where all coordinates are on a small power-of-two grid (Cd_geometry::exact_doubles), the

@@ -239,6 +239,17 @@ struct Crossing_slabs
   {
     return where_by([&](std::size_t s) { return extent(slabs[s].w, T); });
   }
+  /// Does a corner of T certainly lie outside the closure of the crossing set (then no
+  /// perturbation of T's points puts all of them in it)? Needs rounding towards +infinity.
+  bool leaves(const std::array<Vec3<Interval>, 3>& T) const
+  {
+    for (const Slab& s : slabs)
+      for (const auto& x : T) {
+        const Interval wx = dot(s.w, x);
+        if (wx.sup() < s.lo.inf() || wx.inf() > s.hi.sup()) return true;
+      }
+    return false;
+  }
   /// where() of a set whose extent along slab s's axis is extent(s) (a pair: low, high).
   template <class Extent>
   Where where_by(const Extent& extent) const
@@ -389,17 +400,29 @@ public:
   /// Does item u of the moving mesh cross item v of the static mesh for the query set by
   /// set_point()? `here_perturbed()` then tells whether the test looked at the perturbation.
   bool pair_crosses_here(Index u, Index v) { return items_cross(u, v); }
+  /// Points of translations, with what is known of each (set_point()).
+  using Points = std::initializer_list<std::pair<const Exact_point*, Known_zeros>>;
   /// Does item pair (u, v) cross at every point x of `points`, each perturbed as by
   /// set_point(x, directions, count, prefix, zeros)? (Where the pair crosses is convex: then
   /// it crosses on their convex hull, perturbed alike.)
-  bool pair_crosses_at(Index u, Index v, std::initializer_list<std::pair<const Exact_point*, Known_zeros>> points,
-                       const Direction* directions, std::uint32_t count, const Prefix& prefix = {})
+  bool pair_crosses_at(Index u, Index v, Points points, const Direction* directions, std::uint32_t count,
+                       const Prefix& prefix = {})
   {
-    for (const auto& [x, zeros] : points) {
-      set_point(*x, directions, count, prefix, zeros);
-      if (!items_cross(u, v)) return false;
-    }
-    return true;
+    return crosses_at_every(points, directions, count, prefix, [&] { return items_cross(u, v); });
+  }
+  /// Does moving patch a cross static patch b (convex_patches.h: a triangle of each) at every
+  /// point of `points`, perturbed as by pair_crosses_at()? (Where two convex patches cross is
+  /// convex too: then they cross on the points' convex hull, perturbed alike.)
+  bool patch_pair_crosses_at(Index a, Index b, Points points, const Direction* directions, std::uint32_t count)
+  {
+    if (a >= m_moving_patches.patches.size() || b >= m_static_patches.patches.size()) return false;
+    const std::vector<Index>&A = m_moving_patches.patches[a].triangles, &B = m_static_patches.patches[b].triangles;
+    return crosses_at_every(points, directions, count, {}, [&] {
+      for (Index u : A)
+        for (Index v : B)
+          if (items_cross(u, v)) return true;
+      return false;
+    });
   }
   bool here_perturbed() const { return m_perturbed; }
 
@@ -625,7 +648,7 @@ public:
   static Polygon patch_polygon(const Tree_mesh& m, const Convex_patches& patches, Index i)
   {
     const Convex_patches::Patch& p = patches.patches[i];
-    return {&m, {p.corners.begin(), p.corners.end()}, {p.edges.begin(), p.edges.end()}, p.triangle};
+    return {&m, {p.corners.begin(), p.corners.end()}, {p.edges.begin(), p.edges.end()}, p.triangles.front()};
   }
 
   static Index patch_of(const Tree_mesh& m, const Convex_patches& patches, Index item)
@@ -1143,6 +1166,18 @@ private:
   { return m_moving.is_edge(u) ? m_moving.edge_box(m_moving.edge(u)) : m_moving.triangles[u].second.bbox(); }
   CGAL::Bbox_3 static_box(Index v) const
   { return m_static.is_edge(v) ? m_static.edge_box(m_static.edge(v)) : m_static.triangles[v].second.bbox(); }
+
+  /// Does `crosses_here()` hold at every point of `points`, each set by set_point()?
+  template <class Crosses>
+  bool crosses_at_every(Points points, const Direction* directions, std::uint32_t count, const Prefix& prefix,
+                        const Crosses& crosses_here)
+  {
+    for (const auto& [x, zeros] : points) {
+      set_point(*x, directions, count, prefix, zeros);
+      if (!crosses_here()) return false;
+    }
+    return true;
+  }
 
   /// Does item u of the moving mesh (translated) cross item v of the static mesh? Two bare
   /// edges never do (in the generic configuration). Counts the exact test, and leaves

@@ -50,7 +50,7 @@ struct Convex_patches
   {
     std::vector<Index> corners;              // in order around the patch
     std::vector<std::array<Index, 2>> edges; // one border edge per direction (from, to)
-    Index triangle;                          // its first triangle: the patch's normal is its normal
+    std::vector<Index> triangles;            // its triangles; the patch's normal is the first's
   };
 
   std::vector<Index> of; // the patch of each triangle
@@ -73,7 +73,7 @@ private:
     const Index id = Index(patches.size());
     of[t] = id;
     const auto& tri = m.triangles[t];
-    Patch patch{{tri[0], tri[1], tri[2]}, {}, t};
+    Patch patch{{tri[0], tri[1], tri[2]}, {}, {t}};
     std::vector<Index> owner = {t, t, t}; // the triangle of each border edge (corner i to i + 1)
     auto corners = [&](Index f) -> planar_patches::Corners {
       const auto& c = m.triangles[f];
@@ -105,6 +105,7 @@ private:
         const Index before = patch.corners[(i + k - 1) % k], after = patch.corners[(i + 2) % k];
         if (reflex(before, a, d) || reflex(d, b, after)) continue;
         of[w] = id;
+        patch.triangles.push_back(w);
         patch.corners.insert(patch.corners.begin() + std::ptrdiff_t(i) + 1, d);
         owner[i] = w;
         owner.insert(owner.begin() + std::ptrdiff_t(i) + 1, w);

@@ -724,8 +724,14 @@ void find_island_points(const Facet_lattice& lattice, const Mesh_data& P, const 
       started = true;
     }
     std::array<Exact_point, 3> T;
-    for (int k = 0; k < 3; ++k) T[k] = exact_sum(P, lattice.p(cell[k]), Q, lattice.q(cell[k]));
-    if (const std::optional<Cell_weights> w = islands.island_point(T))
+    std::array<std::pair<Sample, Sample>, 3> sums;
+    std::array<Spans, 3> spans;
+    for (int k = 0; k < 3; ++k) {
+      T[k] = exact_sum(P, lattice.p(cell[k]), Q, lattice.q(cell[k]));
+      sums[k] = {lattice.p(cell[k]), lattice.q(cell[k])};
+      spans[k] = Spans{&sums[k]};
+    }
+    if (const std::optional<Cell_weights> w = islands.island_point(T, spans))
       out.push_back(lattice_trim_point(
         lattice, P, Q, fp, cell[0],
         Trim{lattice.p(cell[1]), lattice.q(cell[1]), (*w)[1], lattice.p(cell[2]), lattice.q(cell[2]), (*w)[2], {}, {}},
