@@ -165,7 +165,10 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
 /// corners d / 2^20 inwards) lies in the union of the plane's convolution facets (`cover`).
 /// Triangles of nearly
 /// collinear points (area below 1e-10 of their longest edge squared: crease points rounded
-/// off their line) are left out.
+/// off their line) are left out. Stops at the first side that three kept triangles share: no
+/// manifold mesh has it, and mesh_from_triangles() refuses the triangles so far as it would
+/// all of them (on curved models, whose many small planes overlap round their creases, this
+/// comes after a tenth of the planes, and the CD tests of the rest are saved).
 template <class IsFreeAt>
 std::vector<std::array<std::size_t, 3>>
 plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
@@ -190,6 +193,15 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
   };
   auto coordinates = [](const K::Point_3& x) { return std::array<double, 3>{x.x(), x.y(), x.z()}; };
   std::vector<std::array<std::size_t, 3>> triangles;
+  std::unordered_map<std::uint64_t, int> triangles_at_side; // side (a, b), a < b: a * points + b
+  auto third_at_a_side = [&](const std::array<std::size_t, 3>& t) {
+    bool third = false;
+    for (int e = 0; e < 3; ++e) {
+      const auto [a, b] = std::minmax(t[std::size_t(e)], t[std::size_t(e + 1) % 3]);
+      third |= ++triangles_at_side[std::uint64_t(a) * positions.size() + b] == 3;
+    }
+    return third;
+  };
   const std::vector<Point_plane> planes = point_planes(positions, normals, more, d);
   std::vector<std::vector<std::size_t>> planes_of(positions.size());
   for (std::size_t j = 0; j < planes.size(); ++j)
@@ -249,6 +261,7 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
         continue;
       if (flip) std::swap(t[1], t[2]);
       triangles.push_back(t);
+      if (third_at_a_side(t)) return triangles;
     }
   }
   return triangles;
