@@ -1984,6 +1984,31 @@ TEST_CASE("no_face_joining_parts: a face across a slit, not one across a reflex 
   }
 }
 
+TEST_CASE("kept_triangles: in order, or the kept ones up to a side three share; the tests first where that can come", "[applications][mesh]")
+{
+  using CGAL::Pmsum::internal::kept_triangles;
+  using T = std::array<std::size_t, 3>;
+  // a fan of three triangles on side 0-1 (a fin: no manifold has it), and two others on
+  // sides of their own
+  const std::vector<T> candidates = {{2, 3, 4}, {0, 1, 2}, {3, 4, 5}, {1, 0, 5}, {0, 1, 6}, {4, 6, 7}};
+  std::vector<std::size_t> asked;
+  auto keep_all_but = [&](std::size_t skipped) {
+    return [&asked, skipped](std::size_t k) {
+      asked.push_back(k);
+      return k != skipped;
+    };
+  };
+  // all kept: the fin's third stops it, and only the fin's three were asked (2-3-4 and 3-4-5
+  // share side 3-4, but two triangles make no third)
+  CHECK(kept_triangles(candidates, 8, keep_all_but(99)) == std::vector<T>{{0, 1, 2}, {1, 0, 5}, {0, 1, 6}});
+  CHECK(asked == std::vector<std::size_t>{1, 3, 4});
+  // one of the fin refused: every candidate asked once, the kept ones in their order
+  asked.clear();
+  CHECK(kept_triangles(candidates, 8, keep_all_but(3)) == std::vector<T>{{2, 3, 4}, {0, 1, 2}, {3, 4, 5}, {0, 1, 6}, {4, 6, 7}});
+  std::sort(asked.begin(), asked.end());
+  CHECK(asked == std::vector<std::size_t>{0, 1, 2, 3, 4, 5});
+}
+
 TEST_CASE("no_face_over_empty_space: chords pass, a lid over a tunnel does not", "[applications][mesh]")
 {
   using CGAL::Pmsum::internal::no_face_over_empty_space;

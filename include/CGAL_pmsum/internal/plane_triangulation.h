@@ -156,6 +156,41 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
   return planes;
 }
 
+/// The triangles t of `candidates` (corners: indices below `points`) for which keep(t) holds,
+/// in their order; or, at the first side that three kept triangles share (no manifold mesh has
+/// it), those kept so far. keep() runs first on the triangles with a side that three or more
+/// candidates share, the only ones that can make such a side: where one is made, after few
+/// calls of keep().
+template <class Keep>
+std::vector<std::array<std::size_t, 3>> kept_triangles(const std::vector<std::array<std::size_t, 3>>& candidates,
+                                                       std::size_t points, const Keep& keep)
+{
+  auto side_key = [&](const std::array<std::size_t, 3>& t, int e) {
+    const auto [a, b] = std::minmax(t[std::size_t(e)], t[std::size_t(e + 1) % 3]);
+    return std::uint64_t(a) * points + b;
+  };
+  std::unordered_map<std::uint64_t, int> at_side; // candidates at each side, then kept ones
+  for (const auto& t : candidates)
+    for (int e = 0; e < 3; ++e) ++at_side[side_key(t, e)];
+  std::vector<char> shares(candidates.size(), 0), kept(candidates.size(), 0);
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    for (int e = 0; e < 3; ++e) shares[k] |= at_side[side_key(candidates[k], e)] >= 3;
+  for (auto& [side, count] : at_side) count = 0;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    if (!shares[k] || !(kept[k] = keep(k))) continue;
+    bool third = false;
+    for (int e = 0; e < 3; ++e) third |= ++at_side[side_key(candidates[k], e)] == 3;
+    if (!third) continue;
+    for (std::size_t m = 0; m <= k; ++m)
+      if (kept[m]) triangles.push_back(candidates[m]);
+    return triangles;
+  }
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (shares[k] ? kept[k] : keep(k)) triangles.push_back(candidates[k]);
+  return triangles;
+}
+
 /// The triangles of the planes of `positions` (point_planes(), with `more`), oriented by the planes'
 /// outward normals, that lie on the boundary: is_free_at(x) (x a double point) says whether
 /// the sum is free at x. Each plane's points are triangulated in the plane (constrained
@@ -165,10 +200,9 @@ point_planes(const std::vector<CGAL::Exact_predicates_inexact_constructions_kern
 /// corners d / 2^20 inwards) lies in the union of the plane's convolution facets (`cover`).
 /// Triangles of nearly
 /// collinear points (area below 1e-10 of their longest edge squared: crease points rounded
-/// off their line) are left out. Stops at the first side that three kept triangles share: no
-/// manifold mesh has it, and mesh_from_triangles() refuses the triangles so far as it would
-/// all of them. The exact tests run first on the triangles with a side that three or more
-/// triangles of the planes share, the only ones that can make such a side: on curved models,
+/// off their line) are left out. Stops at the first side that three kept triangles share
+/// (kept_triangles(), the exact tests as keep()): mesh_from_triangles() refuses the triangles
+/// so far as it would all of them. On curved models,
 /// whose many small planes overlap round their creases, a level that fails so fails after a
 /// few of its tests (CGAL's anchor turned + an octahedron 1/32 of its size at 1%, refused at
 /// every level: 148,820 triangles tested plane by plane at d/2 before the third was kept, 17.5 s;
@@ -197,14 +231,10 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
            !is_free_at(std::array<double, 3>{in.x(), in.y(), in.z()});
   };
   auto coordinates = [](const K::Point_3& x) { return std::array<double, 3>{x.x(), x.y(), x.z()}; };
-  // The candidates (oriented triangles, each with its plane) in the order of the planes; the
-  // exact tests (on_face) run on them last, first on those with a side that three or more
-  // candidates share, where a third kept triangle can come.
-  std::vector<std::pair<std::array<std::size_t, 3>, std::size_t>> candidates;
-  auto side_key = [&](const std::array<std::size_t, 3>& t, int e) {
-    const auto [a, b] = std::minmax(t[std::size_t(e)], t[std::size_t(e + 1) % 3]);
-    return std::uint64_t(a) * positions.size() + b;
-  };
+  // The candidates (oriented triangles, with their planes) in the order of the planes; the
+  // exact tests (on_face) run on them last (kept_triangles()).
+  std::vector<std::array<std::size_t, 3>> candidates;
+  std::vector<std::size_t> plane_of;
   const std::vector<Point_plane> planes = point_planes(positions, normals, more, d);
   std::vector<std::vector<std::size_t>> planes_of(positions.size());
   for (std::size_t j = 0; j < planes.size(); ++j)
@@ -253,42 +283,23 @@ plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_k
       if (!(area > 1e-10 * longest)) continue;
       if (!cover.covers({coordinates(a), coordinates(b), coordinates(c)}, std::ldexp(d, -20))) continue;
       if (flip) std::swap(t[1], t[2]);
-      candidates.emplace_back(t, j);
+      candidates.push_back(t);
+      plane_of.push_back(j);
     }
   }
   // The centroid, then a point just inside the triangle at each corner: a triangle from a
   // crease point across a face's missing strip (the mouth of a passage whose far lip has no
   // point) has its centroid on the face, not its corner at that point.
-  auto on_its_face = [&](const std::pair<std::array<std::size_t, 3>, std::size_t>& candidate) {
-    const K::Point_3 &a = positions[candidate.first[0]], &b = positions[candidate.first[1]], &c = positions[candidate.first[2]];
-    const K::Vector_3& n = planes[candidate.second].normal;
+  return kept_triangles(candidates, positions.size(), [&](std::size_t k) {
+    const K::Point_3 &a = positions[candidates[k][0]], &b = positions[candidates[k][1]], &c = positions[candidates[k][2]];
+    const K::Vector_3& n = planes[plane_of[k]].normal;
     const K::Point_3 centroid = CGAL::centroid(a, b, c);
     auto near_corner = [&](const K::Point_3& v) {
       const K::Vector_3 u = centroid - v;
       return v + (std::ldexp(d, -20) / std::sqrt(u.squared_length())) * u;
     };
     return on_face(centroid, n) && on_face(near_corner(a), n) && on_face(near_corner(b), n) && on_face(near_corner(c), n);
-  };
-  std::unordered_map<std::uint64_t, int> at_side; // candidates at each side, then kept ones
-  for (const auto& candidate : candidates)
-    for (int e = 0; e < 3; ++e) ++at_side[side_key(candidate.first, e)];
-  std::vector<char> shares(candidates.size(), 0), kept(candidates.size(), 0);
-  for (std::size_t k = 0; k < candidates.size(); ++k)
-    for (int e = 0; e < 3; ++e) shares[k] |= at_side[side_key(candidates[k].first, e)] >= 3;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for (auto& [side, count] : at_side) count = 0;
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    if (!shares[k] || !(kept[k] = on_its_face(candidates[k]))) continue;
-    bool third = false;
-    for (int e = 0; e < 3; ++e) third |= ++at_side[side_key(candidates[k].first, e)] == 3;
-    if (!third) continue;
-    for (std::size_t m = 0; m <= k; ++m)
-      if (kept[m]) triangles.push_back(candidates[m].first);
-    return triangles;
-  }
-  for (std::size_t k = 0; k < candidates.size(); ++k)
-    if (shares[k] ? kept[k] : on_its_face(candidates[k])) triangles.push_back(candidates[k].first);
-  return triangles;
+  });
 }
 
 /// The double positions of the corners of face f of `mesh`; none if f is not a triangle.
