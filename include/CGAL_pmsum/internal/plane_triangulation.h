@@ -202,12 +202,12 @@ std::vector<std::array<std::size_t, 3>> kept_triangles(const std::vector<std::ar
 /// collinear points (area below 1e-10 of their longest edge squared: crease points rounded
 /// off their line) are left out. Stops at the first side that three kept triangles share
 /// (kept_triangles(), the exact tests as keep()): mesh_from_triangles() refuses the triangles
-/// so far as it would all of them. On curved models,
-/// whose many small planes overlap round their creases, a level that fails so fails after a
-/// few of its tests (CGAL's anchor turned + an octahedron 1/32 of its size at 1%, refused at
-/// every level: 148,820 triangles tested plane by plane at d/2 before the third was kept, 17.5 s;
-/// the whole `pmsum mesh` 285 -> 127 s), and one that passes keeps the same triangles in the
-/// same order.
+/// so far as it would all of them. On curved models, whose many small planes overlap round
+/// their creases, a level that fails so fails after a few of its tests, and one that passes
+/// keeps the same triangles in the same order. (CGAL's anchor turned + an octahedron 1/32 of
+/// its size at 1%, refused at every level: with the tests in the planes' order, 148,820
+/// triangles were tested at d/2 before a third was kept, 17.5 s; the whole `pmsum mesh`
+/// 285 -> 127 s with this order.)
 template <class IsFreeAt>
 std::vector<std::array<std::size_t, 3>>
 plane_triangles(const std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& positions,
