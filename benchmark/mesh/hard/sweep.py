@@ -5,7 +5,9 @@ per run: the mesh's size, Euler characteristic, shells and the level it came fro
 points kept, `p`: plane by plane), or the exit code and the last line of the error. With
 --validate, each turned run is also checked against Nef (`pmsum validate --mesh`).
 
-    /usr/bin/python3 benchmark/mesh/hard/sweep.py --pmsum build/pmsum --work /tmp/sweep [--slow]
+    /usr/bin/python3 benchmark/mesh/hard/sweep.py --pmsum build/pmsum --work /tmp/sweep [--slow] [--seeds S ...]
+
+--seeds S ...: instead of the variants below, P turned by each seed's rotation, at the row's d.
 
 Shapes made of boxes that touch along faces are refused once turned ("components overlap":
 the rounding makes them cross), as a user's turned assembly would be.
@@ -54,13 +56,15 @@ def main():
     ap.add_argument("--timeout", type=float, default=300)
     ap.add_argument("--validate", action="store_true", help="check the turned runs against Nef too")
     ap.add_argument("--only", nargs="*", help="these pairs (the suite's names) alone")
+    ap.add_argument("--seeds", nargs="*", type=int, help="P turned by these seeds, at the row's d (not VARIANTS)")
     a = ap.parse_args()
+    variants = [("P turned (%d)" % s, 1.0, s) for s in a.seeds] if a.seeds else VARIANTS
     os.makedirs(a.work, exist_ok=True)
     for name, P, Q, d, extra, slow in SUITE:
         if P in OPEN or (a.only and name not in a.only) or (not a.only and slow != a.slow):
             continue
         p, q = shape_path(P, a.pmsum, a.work), shape_path(Q, a.pmsum, a.work)
-        for variant, factor, seed in VARIANTS:
+        for variant, factor, seed in variants:
             pv = turned(p, seed, a.work) if seed is not None else p
             common = [pv, q, "-d", str(d * factor), "--relative", "--threads", "1"] + extra
             out = os.path.join(a.work, "mesh")
