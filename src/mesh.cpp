@@ -57,7 +57,7 @@ Json mesh_summary(const CGAL::Pmsum::Mesh_statistics& ms, const std::string& err
     .integer("refinements", std::size_t(ms.refinements)).boolean("crease_points", ms.crease_points).boolean("by_planes", ms.by_planes).boolean("closed", c.closed).boolean("manifold", c.manifold)
     .boolean("self_intersection_free", c.self_intersection_free).boolean("bounds_a_volume", c.bounds_a_volume)
     .integer("shells", c.shells).integer("void_shells", c.void_shells).add("euler_characteristic", std::to_string(c.euler_characteristic)).num("point_distance", ms.point_distance)
-    .integer("points_put_back", ms.points_put_back)
+    .integer("points_put_back", ms.points_put_back).integer("sheets_remeshed", std::size_t(ms.sheets_remeshed))
     .num("mesh_to_boundary_bound", ms.mesh_to_boundary_bound)
     .num("boundary_to_mesh_bound", ms.boundary_to_mesh_bound()).str("refused", ms.refused);
   return j;

@@ -1366,6 +1366,10 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
     const Mesh m = to_mesh<Mesh>(mesh);
     CHECK(has_second_sheet(m, k.d, search, false) == k.second_sheet);
     CHECK(has_second_sheet(m, k.d, search, true) == k.second_sheet); // (chosen on TBB's threads)
+    // The triangles of the sheets found, for remesh_around(): the triangle met is one added.
+    const auto sheets = second_sheet_triangles(m, k.d, search, true, true);
+    CHECK(sheets.empty() == !k.second_sheet);
+    if (!sheets.empty()) CHECK(sheets.front() >= boundary.triangles.size());
   }
 }
 
@@ -1655,6 +1659,13 @@ TEST_CASE("mesh of a grate with its axes permuted: no second sheet, the sum's Eu
   REQUIRE(checks.valid());
   CHECK(checks.shells == 1);
   CHECK(checks.euler_characteristic == 2 * chi);
+  // The advancing front's mesh at d, made again round its second sheets (it was meshed plane
+  // by plane before), within d of its points both ways.
+  CHECK(ms.refinements == 0);
+  CHECK(!ms.by_planes);
+  CHECK(ms.sheets_remeshed >= 1);
+  CHECK(ms.point_distance < ms.covering_distance);
+  CHECK(ms.mesh_to_boundary_bound < ms.covering_distance);
 }
 
 TEST_CASE("mesh of frame + knot at 4%: no handle explained by a cycle along a groove", "[applications][mesh][long]")

@@ -59,6 +59,10 @@ struct Mesh_statistics
   /// output points the reconstruction left out that were put back as vertices (each splitting
   /// its nearest triangle: internal/mesh_left_out_points.h)
   std::size_t points_put_back = 0;
+  /// how many times the mesh returned was made again round second sheets that the check
+  /// found in it (the sheets' triangles cut with a ring round them, the holes closed again:
+  /// internal/mesh_reconstruction.h, remesh_around()); twice at most
+  int sheets_remeshed = 0;
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
   std::size_t triangles = 0;   ///< triangles of the mesh
   Mesh_checks checks;          ///< the checks of the mesh returned
@@ -169,7 +173,9 @@ Mesh_statistics& start_mesh(const NamedParameters& np, TriangleMesh& mesh, Mesh_
 /// (has_false_void()), no second sheet (has_second_sheet()), no neck across free space nor
 /// channel through the solid (has_neck_or_channel()), no handle narrower than d nor
 /// handle or neck a few d round that the sum is not shown to have (has_false_short_handle()),
-/// the points' distance to the mesh and the mesh's to the points (mesh_distance_bound())); if a check fails, the level is made again
+/// the points' distance to the mesh and the mesh's to the points (mesh_distance_bound())); a
+/// mesh with second sheets is first made again round them (remesh_around()) and checked
+/// again whole, twice at most; if a check fails, the level is made again
 /// with the trim curves searched wherever they are (not only where the covering needs them),
 /// then d is halved, twice at most, at d/2 first without the points on sharp creases, then
 /// with them, at d/4 alike (see `levels`), reusing the coarser decisions; then
@@ -256,49 +262,62 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(
         points, triangles, way == 0 ? Triangles_from::one_delaunay_triangulation : Triangles_from::anywhere, dl, mesh);
-      ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
-                                            : std::numeric_limits<double>::infinity();
-      // Points left out, none as far as dl (farther: a part of the boundary is missing, and
-      // the level refused): put back where they can be, the mesh is then closer to them.
-      ms.points_put_back = ms.point_distance > 0 && ms.point_distance < dl
-                             ? insert_left_out_points<ConcurrencyTag>(points, part, dl, mesh) : 0;
-      if (ms.points_put_back > 0) {
-        ms.checks = check_mesh_given<ConcurrencyTag>(mesh, true); // (tents that cross were taken down)
-        ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh) : std::numeric_limits<double>::infinity();
-      }
-      ms.mesh_to_boundary_bound = ms.checks.valid() ? mesh_distance_bound(mesh, points, dl)
-                                                    : std::numeric_limits<double>::infinity();
-      // Plane by plane, the holes left are closed by fill_holes(): never over empty space. By
-      // the advancing front, never from one lip of a slit in a plane to the other.
-      const bool across = ms.checks.valid() && geometry &&
-                          (cd ? !no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, level_cover())
-                              : !no_face_joining_parts(mesh, dl, level_cover(), [&](const std::array<double, 3>& x) {
-                                  return Cd_filter(geometry).is_free_at(x);
-                                }));
-      ms.covering_distance = dl;
-      ms.refinements = level.halvings;
-      ms.crease_points = creases;
-      // (one outer shell: one volume, nothing to split)
-      const bool split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 &&
-                         splits_a_part(mesh, positions, part);
-      const bool passed = ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
-                          ms.mesh_to_boundary_bound < dl && !across;
-      // Last (they search segments): a void that the sum does not have (mesh_voids.h), two
-      // sheets over one part of the boundary (mesh_second_sheet.h), a neck across free space
-      // or a channel through the solid (mesh_necks.h), a handle the sum is not shown to have (mesh_short_handles.h).
+      // A mesh with second sheets is made again round them (remesh_around()), twice at most,
+      // and checked again whole.
+      bool passed = false, across = false, split = false;
       const char* refuted = nullptr;
-      if (passed && geometry) {
-        Cd_filter filter(geometry);
-        Segment_search search(filter);
-        if (ms.checks.void_shells > 0 && has_false_void(mesh, search))
-          refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
-        else if (has_second_sheet(mesh, dl, search, pipeline.parallel))
-          refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
-        else if (has_neck_or_channel(mesh, dl, search, [&](const std::array<double, 3>& x) { return filter.is_free_at(x); },
-                                     pipeline.parallel))
-          refuted = "joined two parts of the boundary by a neck across free space, or cut a channel through the solid";
-        else if (has_false_short_handle(mesh, dl, search, pipeline.parallel))
-          refuted = "made a handle or a neck a few times that d round that the sum is not shown to have";
+      for (int remeshed = 0;; ++remeshed) {
+        ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
+                                              : std::numeric_limits<double>::infinity();
+        // Points left out, none as far as dl (farther: a part of the boundary is missing, and
+        // the level refused): put back where they can be, the mesh is then closer to them.
+        ms.points_put_back = ms.point_distance > 0 && ms.point_distance < dl
+                               ? insert_left_out_points<ConcurrencyTag>(points, part, dl, mesh) : 0;
+        if (ms.points_put_back > 0) {
+          ms.checks = check_mesh_given<ConcurrencyTag>(mesh, true); // (tents that cross were taken down)
+          ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh) : std::numeric_limits<double>::infinity();
+        }
+        ms.mesh_to_boundary_bound = ms.checks.valid() ? mesh_distance_bound(mesh, points, dl)
+                                                      : std::numeric_limits<double>::infinity();
+        // Plane by plane, the holes left are closed by fill_holes(): never over empty space. By
+        // the advancing front, never from one lip of a slit in a plane to the other.
+        across = ms.checks.valid() && geometry &&
+                 (cd ? !no_face_over_empty_space(mesh, dl, free_at) || !no_face_over_hole(mesh, dl, level_cover())
+                     : !no_face_joining_parts(mesh, dl, level_cover(), [&](const std::array<double, 3>& x) {
+                         return Cd_filter(geometry).is_free_at(x);
+                       }));
+        ms.covering_distance = dl;
+        ms.refinements = level.halvings;
+        ms.crease_points = creases;
+        // (one outer shell: one volume, nothing to split)
+        split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 && splits_a_part(mesh, positions, part);
+        passed = ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
+                 ms.mesh_to_boundary_bound < dl && !across;
+        // Last (they search segments): a void that the sum does not have (mesh_voids.h), two
+        // sheets over one part of the boundary (mesh_second_sheet.h), a neck across free space
+        // or a channel through the solid (mesh_necks.h), a handle the sum is not shown to have (mesh_short_handles.h).
+        refuted = nullptr;
+        std::vector<std::size_t> sheets; // (triangles of second sheets, in the order of faces(mesh))
+        if (passed && geometry) {
+          Cd_filter filter(geometry);
+          Segment_search search(filter);
+          if (ms.checks.void_shells > 0 && has_false_void(mesh, search))
+            refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
+          else if (!(sheets = second_sheet_triangles(mesh, dl, search, pipeline.parallel, true)).empty())
+            refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
+          else if (has_neck_or_channel(mesh, dl, search, [&](const std::array<double, 3>& x) { return filter.is_free_at(x); },
+                                       pipeline.parallel))
+            refuted = "joined two parts of the boundary by a neck across free space, or cut a channel through the solid";
+          else if (has_false_short_handle(mesh, dl, search, pipeline.parallel))
+            refuted = "made a handle or a neck a few times that d round that the sum is not shown to have";
+        }
+        ms.sheets_remeshed = remeshed;
+        if (sheets.empty() || remeshed == 2) break;
+        using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+        const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end());
+        std::set<face_descriptor> cut;
+        for (std::size_t f : sheets) cut.insert(face_of[f]);
+        ms.checks = remesh_around<ConcurrencyTag>(points, std::move(cut), dl, mesh);
       }
       ms.seconds_mesh += seconds_since(t_way); // (the checks included)
       if (passed && !refuted) {
@@ -339,7 +358,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// narrower than `d` that the reconstruction closed), no triangle lies inside the sum under a
 /// vertex, or outside it over the vertex, facing its way, as a second sheet over that part of
 /// the boundary (exact segment tests along the vertex's normal: a pocket between two sheets,
-/// a handle the sum may not have), it joins no two parts of the boundary by a neck across free
+/// a handle the sum may not have; such a mesh is made again round them, twice at most, and
+/// checked again), it joins no two parts of the boundary by a neck across free
 /// space nor cuts a channel through the solid (exact segment tests from its triangles into it
 /// and out of it: where one is wholly outside the sum, the triangles over free space there must
 /// not make a ring; inside it, those under the solid), every handle of it narrower than about `d` is one the sum

@@ -496,9 +496,42 @@ enum class Triangles_from : std::uint8_t
   anywhere
 };
 
+/// Closes `mesh`, whose faces cross none of one another but (if given) those of `suspects`
+/// (all of them if null), and orients it to bound a volume: holes closed (those left open cut
+/// round and closed again), crossings cut and closed again, bubbles removed. Returns the
+/// mesh's checks. `points`: the d-covering whose points fill_holes() may put in.
+template <class ConcurrencyTag, class TriangleMesh, class Point>
+Mesh_checks close_mesh(const std::vector<Point>& points, double d,
+                       std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor>* suspects, TriangleMesh& mesh)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::set<face_descriptor> filled;
+  std::set<face_descriptor>* fillings = suspects ? suspects : &filled;
+  fill_holes(mesh, 3 * d, std::inserter(*fillings, fillings->end()), points);
+  // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),
+  // or a hole is left open, cut the crossing triangles, or those beside the hole, with a
+  // growing neighbourhood and fill again. The last search that found no crossing, on the mesh
+  // as it is, answers that check.
+  std::optional<bool> self_intersection_free;
+  for (int rings = 1; rings <= 3; ++rings) {
+    const bool holes = cut_round_holes(mesh, rings, fillings);
+    if (!cut_self_intersections<ConcurrencyTag>(mesh, rings, suspects) && !holes) {
+      self_intersection_free = true;
+      break;
+    }
+    fill_holes(mesh, 3 * d, std::inserter(*fillings, fillings->end()), points);
+  }
+  remove_bubbles(mesh, d); // (removing shells makes no crossing)
+  Mesh_checks c = check_mesh_given<ConcurrencyTag>(mesh, self_intersection_free);
+  if (c.self_intersection_free && !c.bounds_a_volume) {
+    CGAL::Polygon_mesh_processing::orient_to_bound_a_volume(mesh);
+    check_shells(mesh, c); // reorienting changes no position: the other checks stand
+  }
+  return c;
+}
+
 /// Makes `triangles` (indices into `points`, a d-covering) into `mesh`, oriented to bound a
-/// volume: holes closed (those left open cut round and closed again), crossings cut and closed
-/// again, bubbles removed. Returns the mesh's checks; the mesh is left empty if the triangles
+/// volume (close_mesh()). Returns the mesh's checks; the mesh is left empty if the triangles
 /// do not form an oriented manifold.
 /// Triangles_from::one_delaunay_triangulation with points of double coordinates (the
 /// positions triangulated): only the triangles that fill holes, and those whose boxes meet
@@ -519,27 +552,21 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points, const std::vec
   const bool delaunay = from == Triangles_from::one_delaunay_triangulation &&
                         std::is_same<typename CGAL::Kernel_traits<Point>::Kernel::FT, double>::value;
   std::set<face_descriptor> filled;
-  fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()), points);
-  // Where a filled hole crosses the triangles beside it (a fold left by the reconstruction),
-  // or a hole is left open, cut the crossing triangles, or those beside the hole, with a
-  // growing neighbourhood and fill again. The last search that found no crossing, on the mesh
-  // as it is, answers that check.
-  std::optional<bool> self_intersection_free;
-  for (int rings = 1; rings <= 3; ++rings) {
-    const bool holes = cut_round_holes(mesh, rings, &filled);
-    if (!cut_self_intersections<ConcurrencyTag>(mesh, rings, delaunay ? &filled : nullptr) && !holes) {
-      self_intersection_free = true;
-      break;
-    }
-    fill_holes(mesh, 3 * d, std::inserter(filled, filled.end()), points);
-  }
-  remove_bubbles(mesh, d); // (removing shells makes no crossing)
-  Mesh_checks c = check_mesh_given<ConcurrencyTag>(mesh, self_intersection_free);
-  if (c.self_intersection_free && !c.bounds_a_volume) {
-    PMP::orient_to_bound_a_volume(mesh);
-    check_shells(mesh, c); // reorienting changes no position: the other checks stand
-  }
-  return c;
+  return close_mesh<ConcurrencyTag>(points, d, delaunay ? &filled : nullptr, mesh);
+}
+
+/// Cuts the faces `cut` of `mesh` (closed, no two faces crossing) with a ring of faces
+/// round them out of it, and closes it again (close_mesh(); only the new faces may cross
+/// another). Returns the mesh's checks.
+template <class ConcurrencyTag, class TriangleMesh, class Point>
+Mesh_checks remesh_around(const std::vector<Point>& points,
+                          std::set<typename boost::graph_traits<TriangleMesh>::face_descriptor> cut, double d,
+                          TriangleMesh& mesh)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  remove_faces_with_rings(mesh, std::move(cut), 1, nullptr);
+  std::set<face_descriptor> filled;
+  return close_mesh<ConcurrencyTag>(points, d, &filled, mesh);
 }
 
 /// The part of the point at each position (`part[i]`: of `points[i]`, Sum_parts::of()), to

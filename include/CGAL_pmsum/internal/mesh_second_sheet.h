@@ -53,7 +53,14 @@
 // finds it), and refused one
 // right mesh (a bump near a corner; the next level was accepted). The normals and the meeting
 // points are computed in doubles and only choose which segments are searched; the exact
-// segment search decides. A mesh with a second sheet is refused like one that fails a check.
+// segment search decides. A mesh with a second sheet is made again round it (mesh_levels():
+// the triangle met and the last one facing against u before it, with a ring of triangles
+// round them, cut out and the holes closed again, remesh_around()) and checked again whole,
+// twice at most, then refused like one that fails a check. Made again so (2026-12-07): the
+// permuted grate plus a cube of 0.3 at 2%, meshed at d where it was meshed plane by plane
+// (2.8 s against 10.2 s, Euler characteristic -16, exact -16); grate-a plus a rotated cube,
+// meshed at d/2 where no level was accepted; the plates turned at random plus a small cube,
+// meshed at d where every level was refused (two shells, Euler characteristic 4, exact 4).
 // Cost: an AABB tree of the triangles and two segment queries per vertex, the segments chosen
 // on every thread; v's own triangles are left out of the queries' exact tests (they meet the
 // segment at v, a degenerate test that the exact arithmetic decided): on 87,664 triangles
@@ -96,23 +103,17 @@ struct Vertex_stars : Triangle_stars // (the triangles at each vertex)
   }
 };
 
-/// Does `mesh` (closed, its vertices on the boundary of the sum) have two sheets over one part
-/// of the boundary: does a segment of length `d` from a vertex v along its normal, into the
-/// mesh or out of it, meet a triangle inside (or inside a side between two such) that has no
-/// corner in v's star, faces v's way and shares no side with a triangle facing against it met
-/// before, at a point q with the segment from v to q wholly inside the sum (into the mesh) or
-/// outside it (out of it) (see the file comment)? `search`: on the CD filter of the sum.
-/// `parallel`: choose the segments on the threads of TBB (the exact searches then run on this
-/// one, in the vertices' order).
-/// @pre no triangle of `mesh` is degenerate in doubles (check_mesh() counts one as a
-///      self-intersection: the meshes checked here passed it)
+/// The triangles of the second sheets has_second_sheet() finds (indices in the order of
+/// faces(mesh)): of each, the triangle met and the last one facing against v's normal that
+/// the segment met before it (the pocket's other wall), if any; of the first sheet found
+/// only, unless `all`.
 template <class TriangleMesh>
-bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search, bool parallel)
+std::vector<std::size_t> second_sheet_triangles(const TriangleMesh& mesh, double d, Segment_search& search, bool parallel, bool all)
 {
   using V = std::array<double, 3>;
   const std::vector<Shell> shells = {to_shell(mesh)};
   const Shell& s = shells.front();
-  if (s.triangles.empty()) return false;
+  if (s.triangles.empty()) return {};
   const Vertex_stars stars(s);
   const auto& normal = stars.normal; // (references, not a structured binding: lambdas capture them)
   const auto& vertex_normal = stars.vertex_normal;
@@ -144,7 +145,7 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
   };
   // The segments v -> q to search (those the doubles choose), into the mesh (`under`) and
   // out of it, in the order of the vertices whichever thread chose them.
-  struct Segment { V from, q; bool under; };
+  struct Segment { V from, q; bool under; std::size_t met, before; }; // (before: none if the number of triangles)
   const std::vector<Segment> chosen = map_ranges<Segment>(s.points.size(), parallel, nullptr, [&](std::size_t first, std::size_t last, std::vector<Segment>& out) {
     std::vector<std::size_t> star;
     std::vector<std::pair<double, std::size_t>> met; // (distance from v, triangle)
@@ -181,17 +182,40 @@ bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search
                 return dot(normal[e.second], u) < 0 && shares_a_side(e.second, f);
               }))
             continue;
+          std::size_t before = s.triangles.size();
+          for (std::size_t j = 0; j < k; ++j)
+            if (dot(normal[met[j].second], u) < 0) before = met[j].second;
           const V q = p + scaled(w, h);
-          out.push_back({p + scaled(q - p, std::ldexp(1., -20)), q, side < 0});
+          out.push_back({p + scaled(q - p, std::ldexp(1., -20)), q, side < 0, f, before});
         }
       }
     }
   });
-  for (const Segment& c : chosen)
-    if (c.under && inside_segment(search, c.from, c.q)) return true;
-  for (const Segment& c : chosen)
-    if (!c.under && free_segment(search, c.from, c.q)) return true;
-  return false;
+  std::vector<std::size_t> found;
+  for (const bool under : {true, false})
+    for (const Segment& c : chosen) {
+      if (c.under != under || (under ? !inside_segment(search, c.from, c.q) : !free_segment(search, c.from, c.q))) continue;
+      found.push_back(c.met);
+      if (c.before < s.triangles.size()) found.push_back(c.before);
+      if (!all) return found;
+    }
+  return found;
+}
+
+/// Does `mesh` (closed, its vertices on the boundary of the sum) have two sheets over one part
+/// of the boundary: does a segment of length `d` from a vertex v along its normal, into the
+/// mesh or out of it, meet a triangle inside (or inside a side between two such) that has no
+/// corner in v's star, faces v's way and shares no side with a triangle facing against it met
+/// before, at a point q with the segment from v to q wholly inside the sum (into the mesh) or
+/// outside it (out of it) (see the file comment)? `search`: on the CD filter of the sum.
+/// `parallel`: choose the segments on the threads of TBB (the exact searches then run on this
+/// one, in the vertices' order).
+/// @pre no triangle of `mesh` is degenerate in doubles (check_mesh() counts one as a
+///      self-intersection: the meshes checked here passed it)
+template <class TriangleMesh>
+bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search, bool parallel)
+{
+  return !second_sheet_triangles(mesh, d, search, parallel, false).empty();
 }
 
 } // namespace internal
