@@ -355,7 +355,7 @@ if [ $? = 0 ] && grep -q "mesh checks       closed, manifold" "$work/vm.txt" && 
    && grep -q '"euler_characteristic": 2,' "$work/vm.json" && grep -q '"exact_euler_characteristic": 2,' "$work/vm.json" \
    && grep -q '"mesh_to_exact_over_d": 0\.' "$work/vm.json" && grep -q '"exact_to_mesh_over_d": 0\.' "$work/vm.json" \
    && grep -q '"boundary_to_mesh_bound": 0\.' "$work/vm.json" && grep -q '"mesh_to_boundary_bound": 0\.' "$work/vm.json" \
-   && grep -q '"points_put_back": [0-9]' "$work/vm.json" \
+   && grep -q '"points_put_back": [0-9]' "$work/vm.json" && grep -q '"sheets_remeshed": 0,' "$work/vm.json" \
    && [ -s "$work/vm.off" ]; then ok; else ko "validate --mesh"; cat "$work/vm.txt"; fi
 expect_fail 2 ".off, .obj, .ply or .stl" -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.xyz"
 expect_fail 2 "unknown option"           -- mesh "$cube" "$tet" -d 0.2 -o "$work/out.off" --all-candidates
