@@ -424,6 +424,18 @@ then ok; else ko "grooved block + octahedron: faces across a shallow notch kept"
   --json "$work/gb.json" --quiet
 if [ $? = 0 ] && grep -q '"by_planes": false' "$work/gb.json" && grep -q '"refused": ""' "$work/gb.json"
 then ok; else ko "grooved block + octahedron: the advancing front's mesh at d"; fi
+# The plates turned at random (data/plates_turned.off) + a small cube at d = 2%: a sum with a
+# void. The advancing front's mesh at d has a fin of its solid in free space, a second sheet by
+# the check: every level was refused (exit 6 after 68 s). Made again round the sheet, the first
+# mesh passes every check, with the exact boundary's shells and Euler characteristic
+"$pmsum" generate cube-small -o "$work/cube-small.off" > /dev/null
+"$pmsum" validate "$data/plates_turned.off" "$work/cube-small.off" -d 0.02 --relative --mesh > "$work/pt.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/pt.txt" && grep -q "0 refinements" "$work/pt.txt" \
+   && grep -q "2 shells (1 voids), exact: 2 (1)" "$work/pt.txt" && grep -q "Euler characteristic 4, exact: 4" "$work/pt.txt"
+then ok; else ko "turned plates + small cube: the mesh made again round a second sheet"; cat "$work/pt.txt"; fi
+"$pmsum" mesh "$data/plates_turned.off" "$work/cube-small.off" -d 0.02 --relative -o "$work/pt.off" --json "$work/pt.json" --quiet
+if [ $? = 0 ] && grep -q '"sheets_remeshed": [12],' "$work/pt.json" && grep -q '"refused": ""' "$work/pt.json"
+then ok; else ko "turned plates + small cube: sheets_remeshed"; fi
 # narrow-tunnel at d = 10%: the advancing front lays lids over the tunnel's mouths, its walls' points
 # inside the mesh, d to 2 d from it. Putting points that far back (tents in the lids, tried for thin
 # plates' ends) gave a mesh without the tunnel (Euler characteristic 2): the level must be refused
