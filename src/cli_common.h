@@ -529,6 +529,7 @@ inline Json sum_summary(const Sum_input& in, const CGAL::Pmsum::Statistics& stat
     .integer("octree_leaves", stats.octree_leaves).integer("octree_certified_leaves", stats.octree_certified_leaves)
     .integer("candidates_certified", stats.candidates_certified).integer("candidates_reused", stats.candidates_reused)
     .integer("candidates_covered", stats.candidates_covered)
+    .integer("candidates_in_patch_pairs", stats.candidates_in_patch_pairs)
     .integer("cd_queries", stats.cd_queries).integer("triangle_pairs", stats.triangle_pairs)
     .integer("containment_tests", stats.containment_tests).integer("corner_tests", stats.corner_tests)
     .integer("trim_queries", stats.trim_queries)

@@ -57,6 +57,21 @@ TEST_CASE("L-shape + cube is a union of two boxes", "[nonconvex]")
   CHECK(r.points.size() < r.stats.candidates);
 }
 
+TEST_CASE("boxes that touch face to face + a cube: the seams inside the sum decided on the facets' planes, the net exact and covering", "[nonconvex][trim]")
+{
+  // The paper's blocks (five unit boxes of a checkerboard) + a unit cube: a box, [0, 4]^2 x
+  // [0, 1.5], whose inside is crossed by convolution facets on the seams x, y = 1, 2, 3 where
+  // the boxes' sums touch face to face. There the CD filter needs the perturbation's exact
+  // signs at every point, and one patch pair's crossing set holds the facet's points once the
+  // facet's plane decides its seam (decision.h, Facet_patch_test): candidates and lattice
+  // points decided so are never CD-tested. The output is checked as always: every point
+  // exactly on the exact boundary, covering it, a net of the boundary candidates.
+  const Result r = check(blocks(3, 0.5), box({0, 0, 0}, {1, 1, 1}), 0.25);
+  INFO(r.stats.candidates << " candidates, " << r.stats.candidates_in_patch_pairs << " in patch pairs, "
+                          << r.stats.cd_queries << " CD queries, " << r.stats.corner_tests << " corner tests");
+  CHECK(r.stats.candidates_in_patch_pairs > 0);
+}
+
 TEST_CASE("L-shape + cube, records report the reflex crease exactly", "[nonconvex]")
 {
   // The sum's reflex edge is the segment x = y = 1.5, z in [0, 1.5].
@@ -613,10 +628,71 @@ TEST_CASE("convex planar patches: a box's faces are one patch each, and their cr
   CHECK(by_witness > 10);
 }
 
+namespace {
+
+/// -P (the filter's translations are -P + Q): two unit boxes 0.5 apart along x; Q: a box 0.5
+/// wide. Their sums with Q, [0, 1.5] and [1.5, 3] along x, touch on the plane x = 1.5.
+struct Wall_case
+{
+  static Soup minus_p()
+  {
+    Soup ps = box({-1, -1, -1}, {0, 0, 0});
+    ps.append(box({-2.5, -1, -1}, {-1.5, 0, 0}));
+    return ps;
+  }
+  Wall_case() : cd(minus_p(), box({0, 0, 0}, {0.5, 0.5, 0.5})) {}
+
+  /// Is translation x free, perturbed along the axes?
+  bool free_at(const CGAL::Pmsum::internal::Exact_point& x)
+  {
+    cd.filter.set_point(x, nullptr, 0);
+    return cd.filter.is_free_here();
+  }
+
+  /// A small random triangle of translations on the plane x = wall, within y, z in (0, 1.5):
+  /// its exact corners and boxes holding them.
+  struct Cell
+  {
+    std::array<CGAL::Pmsum::internal::Exact_point, 3> x;
+    std::array<CGAL::Pmsum::internal::Vec3<CGAL::Pmsum::internal::Interval>, 3> T;
+    double y, z; // near which
+  };
+  static Cell cell(CGAL::Random& rng, double wall)
+  {
+    using namespace CGAL::Pmsum::internal;
+    Cell r;
+    r.y = rng.get_double(0.05, 1.45);
+    r.z = rng.get_double(0.05, 1.45);
+    for (int i = 0; i < 3; ++i) {
+      const std::array<double, 3> t = {wall, r.y + rng.get_double(-0.04, 0.04), r.z + rng.get_double(-0.04, 0.04)};
+      r.x[i] = {{Exact_nt(t[0]), Exact_nt(t[1]), Exact_nt(t[2])}, Exact_nt(1)};
+      r.T[i] = {Interval(t[0]), Interval(t[1]), Interval(t[2])};
+    }
+    return r;
+  }
+
+  /// Free points among 15 of the triangle (exact tests).
+  std::size_t free_points(const Cell& cell)
+  {
+    std::size_t n = 0;
+    for (int a = 0; a <= 4; ++a)
+      for (int b = 0; a + b <= 4; ++b) {
+        CGAL::Pmsum::internal::Exact_point m;
+        for (int c = 0; c < 3; ++c) m.X[c] = (4 - a - b) * cell.x[0].X[c] + a * cell.x[1].X[c] + b * cell.x[2].X[c];
+        m.W = CGAL::Pmsum::internal::Exact_nt(4);
+        n += free_at(m);
+      }
+    return n;
+  }
+
+  Cd_case cd;
+};
+
+} // namespace
+
 TEST_CASE("cells on a wall where two parts of the sum touch face to face: in one patch pair's crossing set once perturbed", "[filters][islands]")
 {
-  // -P (the filter's translations are -P + Q): two unit boxes 0.5 apart along x; Q: a box 0.5
-  // wide. Their sums with Q, [0, 1.5] and [1.5, 3] along x, touch on the plane x = 1.5: inside
+  // Wall_case: the plane x = 1.5 of translations, where the two boxes' sums touch, is inside
   // the sum, but on the border of every patch pair's crossing set, so intervals never hold a
   // cell there. Perturbed (here along the axes), the wall's points lie in one box's sum: of
   // the pairs on whose border the cell lies (no corner certainly outside: Crossing_slabs::
@@ -625,28 +701,14 @@ TEST_CASE("cells on a wall where two parts of the sum touch face to face: in one
   // x = 0 and x = 3, perturbed outward on one of them, a pair holds exactly where the corners
   // are not free.
   using namespace CGAL::Pmsum::internal;
-  Soup ps = box({-1, -1, -1}, {0, 0, 0});
-  ps.append(box({-2.5, -1, -1}, {-1.5, 0, 0}));
-  Cd_case cd(ps, box({0, 0, 0}, {0.5, 0.5, 0.5}));
-  Cd_filter& filter = cd.filter;
-  auto free_at = [&](const Exact_point& x) {
-    filter.set_point(x, nullptr, 0);
-    return filter.is_free_here();
-  };
+  Wall_case wc;
+  Cd_filter& filter = wc.cd.filter;
   CGAL::Random rng(7);
   std::size_t covered_on_wall = 0, covered_outside = 0, free_outside = 0;
   for (const double wall : {0., 1.5, 3.}) {
     for (int k = 0; k < 60; ++k) {
-      // a small triangle of translations on the plane x = wall, within y, z in (0, 1.5)
-      std::array<std::array<double, 3>, 3> t;
-      const double y = rng.get_double(0.05, 1.45), z = rng.get_double(0.05, 1.45);
-      for (auto& c : t) c = {wall, y + rng.get_double(-0.04, 0.04), z + rng.get_double(-0.04, 0.04)};
-      std::array<Exact_point, 3> x;
-      std::array<Vec3<Interval>, 3> T;
-      for (int i = 0; i < 3; ++i) {
-        x[i] = {{Exact_nt(t[i][0]), Exact_nt(t[i][1]), Exact_nt(t[i][2])}, Exact_nt(1)};
-        T[i] = {Interval(t[i][0]), Interval(t[i][1]), Interval(t[i][2])};
-      }
+      const Wall_case::Cell cell = Wall_case::cell(rng, wall);
+      const auto& [x, T, y, z] = cell;
       INFO("plane x = " << wall << ", cell near y = " << y << ", z = " << z);
       // the patch pairs met (as Island_search::island_point()'s traversal): none holds T by
       // intervals; those that T may lie on the border of, is one in it once perturbed?
@@ -670,24 +732,67 @@ TEST_CASE("cells on a wall where two parts of the sum touch face to face: in one
         CHECK(covered);
         covered_on_wall += covered;
       } else {
-        const bool corner_free = free_at(x[0]);
+        const bool corner_free = wc.free_at(x[0]);
         CHECK(covered == !corner_free);
         covered_outside += covered;
         free_outside += corner_free;
       }
-      if (!covered) continue;
-      for (int a = 0; a <= 4; ++a)
-        for (int b = 0; a + b <= 4; ++b) {
-          Exact_point m;
-          for (int c = 0; c < 3; ++c) m.X[c] = (4 - a - b) * x[0].X[c] + a * x[1].X[c] + b * x[2].X[c];
-          m.W = Exact_nt(4);
-          CHECK_FALSE(free_at(m));
-        }
+      if (covered) CHECK(wc.free_points(cell) == 0);
     }
   }
   CHECK(covered_on_wall == 60);
   CHECK(covered_outside == 60); // one outer face is perturbed inward, the other outward
   CHECK(free_outside == 60);
+}
+
+TEST_CASE("the trim search's skip on a facet's plane: cells on a wall where two parts touch face to face", "[filters][trim]")
+{
+  // The case above, seen by the trim search: a facet on the plane x = wall of translations,
+  // its points perturbed along the axes (x first). Segment_search::patch_pair_covers() with
+  // the plane started (start_plane()) also uses what the plane tells of each patch pair (the
+  // slab normal to it holds the whole plane once perturbed, or none of it): on the wall
+  // x = 1.5 and on the face x = 0 (perturbed into the sum) it holds small cells whole, where
+  // intervals alone hold none; on the face x = 3 (perturbed out of the sum) none, and no
+  // corner there is inside. Every cell it holds has no free point (exact tests, perturbed
+  // as the plane's points are).
+  using namespace CGAL::Pmsum::internal;
+  Wall_case wc;
+  Cd_filter& filter = wc.cd.filter;
+  const Mesh_data &P = wc.cd.operands.first, &Q = wc.cd.operands.second; // P: -P's vertices
+  auto vertex_sample = [](const Mesh_data& M, const std::array<double, 3>& x) {
+    for (Index v = 0; v < M.points.size(); ++v)
+      if (M.points[v] == x) return Sample{Feature{0, v}, {v, v, v}, {1, 0, 0}, 1};
+    FAIL("no vertex at " << x[0] << " " << x[1] << " " << x[2]);
+    return Sample{};
+  };
+  CGAL::Random rng(11);
+  for (const double wall : {0., 1.5, 3.}) {
+    // a facet on x = wall: a face of -P's box there (x = 0: of the first, 1.5: of the second,
+    // 3 = 2.5 + 0.5: of the second) plus a vertex of Q
+    const double px = wall == 0 ? 0. : 1.5, qx = wall == 3 ? 0.5 : 0.;
+    const Sample q = vertex_sample(Q, {qx, 0, 0});
+    const double x0 = wall == 3 ? 2.5 : px;
+    const std::array<std::pair<Sample, Sample>, 3> corners = {{{vertex_sample(P, {x0, 0, 0}), q},
+                                                                {vertex_sample(P, {x0, 1, 0}), q},
+                                                                {vertex_sample(P, {x0, 0, 1}), q}}};
+    std::size_t on_plane = 0, by_intervals = 0;
+    for (int k = 0; k < 60; ++k) {
+      const Wall_case::Cell cell = Wall_case::cell(rng, wall);
+      const auto& [x, T, y, z] = cell;
+      INFO("plane x = " << wall << ", cell near y = " << y << ", z = " << z);
+      Segment_search plain(filter);
+      by_intervals += plain.patch_pair_covers(T, {}, true);
+      Segment_search search(filter);
+      search.start_plane(corners, nullptr, 0);
+      const bool covered = search.patch_pair_covers(T, {}, true);
+      on_plane += covered;
+      if (wall == 3) CHECK(wc.free_at(x[0]));
+      if (covered) CHECK(wc.free_points(cell) == 0);
+    }
+    INFO("plane x = " << wall << ": " << on_plane << " of 60 cells held on the plane, " << by_intervals << " by intervals");
+    CHECK(by_intervals == 0);
+    CHECK(on_plane == (wall == 3 ? 0 : 60));
+  }
 }
 
 TEST_CASE("on a small grid, double arithmetic decides the predicates as exact arithmetic does", "[filters][exact]")
@@ -1052,6 +1157,7 @@ TEST_CASE("ranks: k ranks give one process's output and counts", "[ranks][long]"
         CHECK(one.stats.trim_points > 0);
         CHECK(r.stats.candidates_covered == one.stats.candidates_covered);
         CHECK(r.stats.cd_queries == one.stats.cd_queries);
+        CHECK(r.stats.candidates_in_patch_pairs == one.stats.candidates_in_patch_pairs);
         CHECK(r.stats.triangle_pairs == one.stats.triangle_pairs);
         CHECK(r.stats.trim_segments == one.stats.trim_segments);
         CHECK(r.stats.island_cells == one.stats.island_cells);

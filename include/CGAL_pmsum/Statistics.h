@@ -41,6 +41,7 @@ struct Statistics
   std::size_t candidates_certified = 0;     ///< candidates in certified cells: never CD-tested
   std::size_t candidates_reused = 0;        ///< coarse to fine: decided by the coarser level
   std::size_t candidates_covered = 0;       ///< closer than d/2 to an output point: never CD-tested
+  std::size_t candidates_in_patch_pairs = 0; ///< candidates and facet lattice points inside one pair of convex faces' crossing set: never CD-tested
   std::size_t cd_queries = 0;               ///< collision tests of candidates (one per candidate and direction tried)
   std::size_t triangle_pairs = 0;           ///< exact triangle-triangle tests (CD filter and trim search)
   std::size_t containment_tests = 0;        ///< exact point-in-solid tests (CD filter and trim search)

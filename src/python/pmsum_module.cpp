@@ -450,6 +450,7 @@ py::dict statistics_dict(const CGAL::Pmsum::Statistics& s)
   d["candidates_certified"] = s.candidates_certified;
   d["candidates_reused"] = s.candidates_reused;
   d["candidates_covered"] = s.candidates_covered;
+  d["candidates_in_patch_pairs"] = s.candidates_in_patch_pairs;
   d["cd_queries"] = s.cd_queries;
   d["triangle_pairs"] = s.triangle_pairs;
   d["containment_tests"] = s.containment_tests;

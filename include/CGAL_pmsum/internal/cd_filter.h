@@ -792,6 +792,39 @@ public:
     });
   }
 
+  /// patch_crossing_slabs() of the patches a (moving) and b (static) on the plane H set by
+  /// set_plane(), its points perturbed: where intervals leave T on the border of their
+  /// crossing set, what patch_on_plane() knows (coplanar faces: the slab that has H as a
+  /// bounding plane holds all of H, or none of it).
+  std::pair<Crossing_slabs, Crossing_slabs::Where> patch_crossing_slabs_on_plane(Index a, Index b,
+                                                                                 const std::array<Vec3<Interval>, 3>& T)
+  {
+    std::pair<Crossing_slabs, Crossing_slabs::Where> r;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      r = patch_crossing_slabs(a, b, T);
+    }
+    if (r.second != Crossing_slabs::Where::border || !r.first.known) return r;
+    return with_plane(std::move(r.first), patch_on_plane(a, b), T);
+  }
+
+  /// The slabs of a crossing set whose border may cross the triangle T (boxes) of H, and
+  /// where T lies, once what is known of the set on H (c: on_plane(), patch_on_plane()) is used.
+  static std::pair<Crossing_slabs, Crossing_slabs::Where> with_plane(Crossing_slabs set, const Plane_crossing& c,
+                                                                     const std::array<Vec3<Interval>, 3>& T)
+  {
+    using Where = Crossing_slabs::Where;
+    std::pair<Crossing_slabs, Where> r{std::move(set), Where::border};
+    if (c.never) return {{}, Where::outside};
+    if (c.ignored == 0) return r;
+    auto& slabs = r.first.slabs;
+    slabs.erase(std::remove_if(slabs.begin(), slabs.end(), [&](const Crossing_slabs::Slab& s) { return c.ignored >> s.axis & 1; }),
+                slabs.end());
+    CGAL::Protect_FPU_rounding<true> guard;
+    r.second = r.first.where(T);
+    return r;
+  }
+
   /// Does the slab of the polygons A (moving) and B (static) normal to the plane H set by
   /// set_plane() hold every point of H, perturbed: H strictly inside it, or on its border
   /// with the perturbation moving H's points into it? Exact.

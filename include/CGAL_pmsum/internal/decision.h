@@ -102,9 +102,11 @@ struct Tentative
 struct Decision_counters
 {
   std::size_t reused = 0, certified = 0, covered = 0, tested_in_commit = 0;
+  std::size_t in_patch_pairs = 0; // lattice points found inner by Facet_patch_test (no CD query)
   std::size_t trim_segments = 0, trim_points = 0, corner_tests = 0, trim_queries = 0, island_cells = 0;
   void add(const Decision_counters& o)
   {
+    in_patch_pairs += o.in_patch_pairs;
     reused += o.reused; certified += o.certified; covered += o.covered; tested_in_commit += o.tested_in_commit;
     trim_segments += o.trim_segments; trim_points += o.trim_points; corner_tests += o.corner_tests;
     trim_queries += o.trim_queries; island_cells += o.island_cells;
@@ -205,8 +207,45 @@ inline std::uint32_t cd_decision(Cd_filter& filter, const Candidate_pairs& pairs
   return inner;
 }
 
+/// The CD test's shortcut for the lattice points of a 2-dimensional pair with one direction:
+/// a point inside the crossing set of one pair of convex patches, perturbed as the pair's
+/// points are (on the facet's plane, Segment_search::patch_pair_covers()), is inner, as the
+/// CD query would find. The patch pairs tried: those that held the last points, and that of
+/// the last crossing found. Where intervals decide, a few dot products; on a seam where two
+/// parts of the sum touch face to face (CAD parts), where every CD query needs the
+/// perturbation's exact signs, the facet's plane decides the seam's slab once. (With several
+/// directions a point is free if it is free along any of them: no shortcut.)
+class Facet_patch_test
+{
+public:
+  Facet_patch_test(Cd_filter& filter, const Facet_lattice& lattice, const Candidate_pairs& pairs, const Feature_pair& fp)
+    : m_search(filter), m_filter(filter), m_lattice(lattice), m_directions(pairs.directions.data() + fp.first_direction),
+      m_count(fp.number_of_directions)
+  {}
+
+  /// Is lattice point p + q (of P and Q) inner by the shortcut?
+  bool inner(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const Sample& q)
+  {
+    if (m_count != 1) return false;
+    if (!m_search.plane_started()) m_search.start_plane(m_lattice.facet_corners(), m_directions, m_count);
+    const Vec3<Interval> e = lattice_point_box(P, Q, p, q);
+    return m_search.patch_pair_covers({e, e, e}, {m_filter.last_crossing(), std::nullopt, std::nullopt}, false);
+  }
+
+  /// The segment search of the facet (its plane started, or not yet), for its trim search.
+  Segment_search& search() { return m_search; }
+
+private:
+  Segment_search m_search;
+  Cd_filter& m_filter;
+  const Facet_lattice& m_lattice;
+  const Direction* m_directions;
+  std::uint32_t m_count;
+};
+
 inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
-                        std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters);
+                        std::vector<Corner_info>& corners, Cd_filter& filter, Facet_patch_test& patches,
+                        Pair_decision& out, Decision_counters& counters);
 
 /// How many times a lattice cell is cut in four, at most, to show that the net covers it
 /// (Covering_net::covers_all_parts()). Against one point for the whole cell (0), 2 searches
@@ -250,12 +289,15 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     if (lattice->empty()) lattice.reset();
     else corners.assign(lattice->size(), Corner_info{});
   }
-  auto known = [&](std::size_t ip, std::size_t iq, Corner k, const Point3* certified = nullptr) {
+  std::optional<Facet_patch_test> patches;
+  if (lattice) patches.emplace(*filter, *lattice, *c.pairs, fp);
+  // (witness: the item pair whose crossing decided an inside point, if known)
+  auto known = [&](std::size_t ip, std::size_t iq, Corner k, const Point3* certified = nullptr, bool witness = true) {
     if (!lattice) return;
     Corner_info& info = corners[lattice->index_of(candidates.p(ip), candidates.q(iq))];
     info.status = k;
     if (certified) info.leaf = c.octree->certified_leaf(*certified);
-    else if (k == Corner::inside) info.witness = filter->last_crossing();
+    else if (k == Corner::inside && witness) info.witness = filter->last_crossing();
   };
   const Covering_net::Normals normals = c.normals_of(fp);
   candidates.for_each([&](std::size_t ip, std::size_t iq) {
@@ -278,6 +320,12 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
     if (decision == inner) { known(ip, iq, Corner::inside, nullptr); return; }
     if (c.net && c.covers(*c.net, x, normals, kept)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
     if (own && c.covers(*own, x, normals, kept)) { out.tentative.push_back({p, q, x, untested, kept}); return; }
+    if (decision == untested && patches && patches->inner(c.sp->mesh(), c.sq->mesh(), p, q)) {
+      ++counters.in_patch_pairs;
+      if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), inner);
+      known(ip, iq, Corner::inside, nullptr, false);
+      return;
+    }
     if (decision == untested) {
       decision = cd_decision(*filter, *c.pairs, fp, p, q);
       if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), decision);
@@ -290,14 +338,15 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
       own->insert(x, normals);
     }
   });
-  if (lattice) trim_search(c, fp, *lattice, corners, *filter, out, counters);
+  if (lattice) trim_search(c, fp, *lattice, corners, *filter, *patches, out, counters);
 }
 
 /// The trim points of a piece of pair fp's facet (trim_points.h). Lattice points that are not
 /// the piece's candidates (on the facet's edges, or the next piece's) are covered if the net
 /// covers them, else tested with the pair's directions.
 inline void trim_search(const Decision_context& c, const Feature_pair& fp, const Facet_lattice& lattice,
-                        std::vector<Corner_info>& corners, Cd_filter& filter, Pair_decision& out, Decision_counters& counters)
+                        std::vector<Corner_info>& corners, Cd_filter& filter, Facet_patch_test& patches,
+                        Pair_decision& out, Decision_counters& counters)
 {
   const Mesh_data &P = c.sp->mesh(), &Q = c.sq->mesh();
   auto corner = [&](std::uint32_t k) -> const Corner_info& {
@@ -306,13 +355,18 @@ inline void trim_search(const Decision_context& c, const Feature_pair& fp, const
     const Point3 x = lattice.position(k, P, Q);
     if (c.net && c.net->covers(x, c.normals_of(fp))) { info.status = Corner::covered; return info; }
     if (c.octree && (info.leaf = c.octree->certified_leaf(x))) { info.status = Corner::inside; return info; }
+    if (patches.inner(P, Q, lattice.p(k), lattice.q(k))) {
+      ++counters.in_patch_pairs;
+      info.status = Corner::inside;
+      return info;
+    }
     ++counters.corner_tests;
     const bool inside = cd_decision(filter, *c.pairs, fp, lattice.p(k), lattice.q(k)) == inner;
     info.status = inside ? Corner::inside : Corner::free;
     if (inside) info.witness = filter.last_crossing();
     return info;
   };
-  Segment_search search(filter);
+  Segment_search& search = patches.search();
   const std::size_t before = out.trims.size(), queries_before = filter.statistics().queries;
   // Certified inside the sum: a box, by the octree's leaves; else a ball, by the certificate.
   Interior_certificate::Hint hint;

@@ -241,18 +241,9 @@ private:
 
   /// The slabs of the crossing set of a pair of patches (Cd_filter::moving_patch(),
   /// static_patch()) on the facet's plane, and where the triangle e of translations (boxes)
-  /// lies: Cd_filter::patch_crossing_slabs(), and if that leaves it undecided, what
-  /// Cd_filter::patch_on_plane() knows.
+  /// lies (Cd_filter::patch_crossing_slabs_on_plane()).
   std::pair<Crossing_slabs, Where> crossing_slabs(const Pair& patches, const std::array<Vec3<Interval>, 3>& e)
-  {
-    std::pair<Crossing_slabs, Where> r;
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      r = m_filter.patch_crossing_slabs(patches.first, patches.second, e);
-    }
-    if (r.second != Where::border || !r.first.known) return r;
-    return with_plane(std::move(r.first), m_filter.patch_on_plane(patches.first, patches.second), e);
-  }
+  { return m_filter.patch_crossing_slabs_on_plane(patches.first, patches.second, e); }
 
   /// Where the triangle e lies with respect to the crossing set of the item pair (two
   /// triangles), with what `plane` knows of it.
@@ -266,23 +257,7 @@ private:
       for (const Crossing_slabs::Slab& s : m_filter.slabs(pair.first, pair.second)) slabs.slabs.push_back(s);
       w = slabs.where(e);
     }
-    return w == Where::border ? with_plane(std::move(slabs), plane.crossing, e).second : w;
-  }
-
-  /// The slabs of a crossing set whose border may cross the triangle e, and where e lies,
-  /// once what is known of the set on the facet's plane (c) is used.
-  static std::pair<Crossing_slabs, Where> with_plane(Crossing_slabs set, const Cd_filter::Plane_crossing& c,
-                                                     const std::array<Vec3<Interval>, 3>& e)
-  {
-    std::pair<Crossing_slabs, Where> r{std::move(set), Where::border};
-    if (c.never) return {{}, Where::outside};
-    if (c.ignored == 0) return r;
-    auto& slabs = r.first.slabs;
-    slabs.erase(std::remove_if(slabs.begin(), slabs.end(), [&](const Crossing_slabs::Slab& s) { return c.ignored >> s.axis & 1; }),
-                slabs.end());
-    CGAL::Protect_FPU_rounding<true> guard;
-    r.second = r.first.where(e);
-    return r;
+    return w == Where::border ? Cd_filter::with_plane(std::move(slabs), plane.crossing, e).second : w;
   }
 
   /// An item pair met in the current cell, with what is known of it on the facet's plane.

@@ -319,6 +319,7 @@ public:
     stats.candidates_reused = decided.counters.reused;
     stats.candidates_certified = decided.counters.certified;
     stats.candidates_covered = decided.counters.covered;
+    stats.candidates_in_patch_pairs = decided.counters.in_patch_pairs;
     stats.trim_segments = decided.counters.trim_segments;
     stats.island_cells = decided.counters.island_cells;
     stats.corner_tests = decided.counters.corner_tests;

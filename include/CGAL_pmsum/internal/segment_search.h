@@ -158,25 +158,34 @@ public:
     m_in_plane = true;
   }
 
+  /// Was start_plane() called?
+  bool plane_started() const { return m_in_plane; }
+
   /// Number of segments searched.
   std::size_t searched_segments() const { return m_segments; }
 
   /// Does one patch pair's crossing set (Cd_filter::patch_crossing_slabs()) hold all of the
   /// triangle of translations e (boxes holding its corners), with a margin (intervals)? Then
-  /// every point of it, perturbed or not, is a collision: a segment there has no free part, a
+  /// every point of it, perturbed, is a collision: a segment there has no free part, a
   /// lattice cell no island. The patch pairs tried: the last ones that held a triangle
   /// (neighbours are often held by the same), those of the item pairs `witnesses` (known to
   /// cross at its corners), and with `scan`, every patch pair whose items' boxes overlap on e
-  /// (a traversal, as a CD query's). On their slabs alone: what the facet's plane tells of a
-  /// pair (coplanar faces) is not asked. With the scan, the answer does not depend on the
-  /// pairs tried before; without it, a pair missed only costs work.
+  /// (a traversal, as a CD query's). After start_plane(), e lies on the plane and its points
+  /// are perturbed as the plane's: what the plane tells of a pair is used too
+  /// (Cd_filter::patch_crossing_slabs_on_plane(): coplanar faces, whose crossing set has the
+  /// plane as a bounding plane, as on the seams of boxes that touch along faces). With the
+  /// scan, the answer does not depend on the pairs tried before; without it, a pair missed
+  /// only costs work.
   bool patch_pair_covers(const std::array<Vec3<Interval>, 3>& e,
                          const std::array<std::optional<std::pair<Index, Index>>, 3>& witnesses, bool scan)
   {
-    auto holds = [&](const std::pair<Index, Index>& patches) {
+    auto where = [&](const std::pair<Index, Index>& patches) {
+      if (m_in_plane) return m_filter.patch_crossing_slabs_on_plane(patches.first, patches.second, e).second;
       CGAL::Protect_FPU_rounding<true> guard;
-      if (m_filter.patch_crossing_slabs(patches.first, patches.second, e).second != Crossing_slabs::Where::inside)
-        return false;
+      return m_filter.patch_crossing_slabs(patches.first, patches.second, e).second;
+    };
+    auto holds = [&](const std::pair<Index, Index>& patches) {
+      if (where(patches) != Crossing_slabs::Where::inside) return false;
       if (std::find(m_recent_covers.begin(), m_recent_covers.end(), patches) == m_recent_covers.end())
         m_recent_covers[m_next_recent++ % m_recent_covers.size()] = patches;
       return true;

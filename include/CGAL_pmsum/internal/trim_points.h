@@ -19,7 +19,9 @@
 // it, so y has an output point closer than d. Hence: the edges of every cell with a corner
 // known to be inside (tested, certified or reused) are searched, but for a cell inside the
 // sum whole (no free point there): inside the crossing set of one pair of convex patches of
-// the two surfaces (Segment_search::patch_pair_covers(); the pairs of its corners' witnesses,
+// the two surfaces, perturbed as the facet's points are (Segment_search::patch_pair_covers(),
+// on the facet's plane: a facet on the seam of two boxes that touch along a face lies on the
+// border of their crossing sets, inside one once perturbed; the pairs of its corners' witnesses,
 // and for a cell with every corner inside, all pairs met, unless such scans keep failing
 // there: Facet_trim_search::scan_now()), or shown so by the interior
 // certificate. (At coarse d most cells with a corner inside are such: frame + knot at 5%,
@@ -117,6 +119,15 @@ FT sum_coordinate(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const
   if (CGAL::sign(trim->mu) == CGAL::ZERO) return x;
   const FT mu = rational_to<FT>(trim->mu);
   return x + mu * (sample_coordinate<FT>(P, trim->p2, c) + sample_coordinate<FT>(Q, trim->q2, c) - at_lattice);
+}
+
+/// A box holding the point p + q (intervals: cheaper than the exact point).
+inline Vec3<Interval> lattice_point_box(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const Sample& q)
+{
+  CGAL::Protect_FPU_rounding<true> guard;
+  Vec3<Interval> e;
+  for (int c = 0; c < 3; ++c) e[c] = sum_coordinate<Interval>(P, Q, p, q, nullptr, c);
+  return e;
 }
 
 /// A trim point found by a pair's search, with the radius within which an output point
@@ -426,7 +437,7 @@ public:
   /// narrow strips, Strips::followed), each searched once.
   void search_segments()
   {
-    m_search.start_plane(m_lattice.facet_corners(), m_directions, m_fp.number_of_directions);
+    start_plane();
     std::vector<Segment_parameter> ends;
     for (std::size_t n = 0; n < m_to_search.size(); ++n) {
       const Segment ab = m_to_search[n];
@@ -588,19 +599,20 @@ private:
       if (c.status == Corner::free) return false;
       if (c.status == Corner::inside) witnesses[k] = c.witness;
     }
+    start_plane(); // (the facet's plane decides the seams between coplanar faces)
     const bool covered = m_search.patch_pair_covers({box_of(cell[0]), box_of(cell[1]), box_of(cell[2])}, witnesses, scan);
     if (scan) scanned(covered);
     return covered;
   }
 
-  /// A box holding lattice point k (intervals: cheaper than the exact point).
-  Vec3<Interval> box_of(std::uint32_t k) const
+  /// Starts the facet's plane in the segment search, once (Segment_search::start_plane()).
+  void start_plane()
   {
-    CGAL::Protect_FPU_rounding<true> guard;
-    Vec3<Interval> e;
-    for (int c = 0; c < 3; ++c) e[c] = sum_coordinate<Interval>(m_p, m_q, m_lattice.p(k), m_lattice.q(k), nullptr, c);
-    return e;
+    if (!m_search.plane_started()) m_search.start_plane(m_lattice.facet_corners(), m_directions, m_fp.number_of_directions);
   }
+
+  /// A box holding lattice point k.
+  Vec3<Interval> box_of(std::uint32_t k) const { return lattice_point_box(m_p, m_q, m_lattice.p(k), m_lattice.q(k)); }
 
   /// Is the bounding box of these lattice points certified inside the sum?
   bool certified(std::initializer_list<std::uint32_t> corners, bool ball)
@@ -688,6 +700,7 @@ private:
 /// `ball`: also by the certificate's balls, costlier, for cells and for segments between two
 /// certified leaves), or a segment's ends lie in one certified octree leaf; a cell when one
 /// patch pair certainly crosses on all of it (`search`'s Segment_search::patch_pair_covers()).
+/// `search`: its plane not started yet, or started on the lattice's facet.
 template <class CornerInfo, class Certified, class Covered>
 void find_trim_points(const Facet_lattice& lattice, const Mesh_data& P, const Mesh_data& Q,
                       const Candidate_pairs& pairs, const Feature_pair& fp, double d, Strips strips, const CornerInfo& corner,
