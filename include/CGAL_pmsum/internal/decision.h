@@ -291,13 +291,15 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
   }
   std::optional<Facet_patch_test> patches;
   if (lattice) patches.emplace(*filter, *lattice, *c.pairs, fp);
-  // (witness: the item pair whose crossing decided an inside point, if known)
-  auto known = [&](std::size_t ip, std::size_t iq, Corner k, const Point3* certified = nullptr, bool witness = true) {
+  // What the trim search knows of a candidate: its status, and of an inside one its certified
+  // leaf (`certified`: its position) or the item pair whose crossing decided it (`witness`).
+  auto known = [&](std::size_t ip, std::size_t iq, Corner k, const Point3* certified = nullptr,
+                   const std::optional<std::pair<Index, Index>>& witness = std::nullopt) {
     if (!lattice) return;
     Corner_info& info = corners[lattice->index_of(candidates.p(ip), candidates.q(iq))];
     info.status = k;
     if (certified) info.leaf = c.octree->certified_leaf(*certified);
-    else if (k == Corner::inside && witness) info.witness = filter->last_crossing();
+    info.witness = witness;
   };
   const Covering_net::Normals normals = c.normals_of(fp);
   candidates.for_each([&](std::size_t ip, std::size_t iq) {
@@ -317,19 +319,19 @@ inline void decide_piece(const Decision_context& c, const Pair_piece& piece, Cd_
       else if (!own || !c.covers(*own, x, normals, kept)) known(ip, iq, Corner::inside, &x);
       return;
     }
-    if (decision == inner) { known(ip, iq, Corner::inside, nullptr); return; }
+    if (decision == inner) { known(ip, iq, Corner::inside, nullptr, filter->last_crossing()); return; }
     if (c.net && c.covers(*c.net, x, normals, kept)) { ++counters.covered; known(ip, iq, Corner::covered); return; }
     if (own && c.covers(*own, x, normals, kept)) { out.tentative.push_back({p, q, x, untested, kept}); return; }
     if (decision == untested && patches && patches->inner(c.sp->mesh(), c.sq->mesh(), p, q)) {
       ++counters.in_patch_pairs;
       if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), inner);
-      known(ip, iq, Corner::inside, nullptr, false);
+      known(ip, iq, Corner::inside);
       return;
     }
     if (decision == untested) {
       decision = cd_decision(*filter, *c.pairs, fp, p, q);
       if (c.record_decisions) out.tested.emplace_back(Decision_cache::Key::of(i, p, q), decision);
-      if (decision == inner) { known(ip, iq, Corner::inside); return; }
+      if (decision == inner) { known(ip, iq, Corner::inside, nullptr, filter->last_crossing()); return; }
     }
     known(ip, iq, Corner::free);
     out.tentative.push_back({p, q, x, decision, kept});
