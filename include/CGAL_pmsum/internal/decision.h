@@ -227,7 +227,7 @@ public:
   bool inner(const Mesh_data& P, const Mesh_data& Q, const Sample& p, const Sample& q)
   {
     if (m_count != 1) return false;
-    if (!m_search.plane_started()) m_search.start_plane(m_lattice.facet_corners(), m_directions, m_count);
+    start_facet_plane(m_search, m_lattice, m_directions, m_count);
     const Vec3<Interval> e = lattice_point_box(P, Q, p, q);
     return m_search.patch_pair_covers({e, e, e}, {m_filter.last_crossing(), std::nullopt, std::nullopt}, false);
   }

@@ -351,6 +351,14 @@ private:
   double m_diameter = 0;
 };
 
+/// Starts the plane of the lattice's facet in `search` (Segment_search::start_plane()), points
+/// perturbed along `directions` (count of them), unless it is started.
+inline void start_facet_plane(Segment_search& search, const Facet_lattice& lattice, const Direction* directions,
+                              std::uint32_t count)
+{
+  if (!search.plane_started()) search.start_plane(lattice.facet_corners(), directions, count);
+}
+
 /// Which cells the trim search searches (none inside the sum whole: see select_cells()):
 /// where the covering needs it (cells with a corner known inside that no output point covers
 /// whole); every cell with a corner known inside (a mesh needs the trim curves around a hole
@@ -608,7 +616,7 @@ private:
   /// Starts the facet's plane in the segment search, once (Segment_search::start_plane()).
   void start_plane()
   {
-    if (!m_search.plane_started()) m_search.start_plane(m_lattice.facet_corners(), m_directions, m_fp.number_of_directions);
+    start_facet_plane(m_search, m_lattice, m_directions, m_fp.number_of_directions);
   }
 
   /// A box holding lattice point k.
@@ -732,7 +740,7 @@ void find_island_points(const Facet_lattice& lattice, const Mesh_data& P, const 
     if (covered({lattice.position(cell[0], P, Q), lattice.position(cell[1], P, Q), lattice.position(cell[2], P, Q)}))
       continue;
     if (!started) { // the facet's plane, as in the trim search
-      search.start_plane(lattice.facet_corners(), directions, fp.number_of_directions);
+      start_facet_plane(search, lattice, directions, fp.number_of_directions);
       islands.start_facet(directions, fp.number_of_directions);
       started = true;
     }
