@@ -436,6 +436,16 @@ then ok; else ko "turned plates + small cube: the mesh made again round a second
 "$pmsum" mesh "$data/plates_turned.off" "$work/cube-small.off" -d 0.02 --relative -o "$work/pt.off" --json "$work/pt.json" --quiet
 if [ $? = 0 ] && grep -q '"sheets_remeshed": [12],' "$work/pt.json" && grep -q '"refused": ""' "$work/pt.json"
 then ok; else ko "turned plates + small cube: sheets_remeshed"; fi
+# The L-shape turned at random (data/l_shape_turned.off), -P + a small cube at d = 2%: the advancing
+# front's mesh at d folded under a convex crease (chords from one face to the other, facing into the
+# solid) and passed every other check with a handle too many (Euler characteristic 0). Now the fold
+# is made again round: the exact boundary's shells and Euler characteristic, at the first level
+"$pmsum" validate "$data/l_shape_turned.off" "$work/cube-small.off" -d 0.02 --relative --negate-p --mesh \
+  --json "$work/lt.json" > "$work/lt.txt" 2>&1
+if [ $? = 0 ] && grep -q "verdict           OK" "$work/lt.txt" && grep -q "Euler characteristic 2, exact: 2" "$work/lt.txt" \
+   && grep -q "1 shells (0 voids), exact: 1 (0)" "$work/lt.txt" && grep -q '"sheets_remeshed": [12],' "$work/lt.json" \
+   && grep -q '"refused": ""' "$work/lt.json"
+then ok; else ko "turned L-shape, contact space of a small cube: the fold made again round"; cat "$work/lt.txt"; fi
 # narrow-tunnel at d = 10%: the advancing front lays lids over the tunnel's mouths, its walls' points
 # inside the mesh, d to 2 d from it. Putting points that far back (tents in the lids, tried for thin
 # plates' ends) gave a mesh without the tunnel (Euler characteristic 2): the level must be refused

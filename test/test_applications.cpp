@@ -991,6 +991,35 @@ TEST_CASE("remove_bubbles: shells smaller than d go, unless none would remain", 
   CHECK(faces(tiny).size() == 12);
 }
 
+TEST_CASE("faces_against_their_corners: faces more than 100 degrees from the face normal of each corner",
+          "[applications][mesh]")
+{
+  auto against = [](const Mesh& m, const auto& normal_at) {
+    return CGAL::Pmsum::internal::faces_against_their_corners(m, normal_at).size();
+  };
+  using CGAL::Pmsum::internal::Position;
+  using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
+  Mesh m = to_mesh<Mesh>(box({-1, -1, -1}, {1, 1, 1}));
+  // Outward from the centre: every face 54.7 degrees from its corners' normals
+  auto radial = [](const Position& x) -> std::optional<Vector> {
+    const Vector v(x[0], x[1], x[2]);
+    return v / std::sqrt(v.squared_length());
+  };
+  CHECK(against(m, radial) == 0);
+  // One normal everywhere: the faces at x = -1 make 180 degrees with it, the others 90 or 0
+  auto along_x = [](const Position&) -> std::optional<Vector> { return Vector(1, 0, 0); };
+  CHECK(against(m, along_x) == 2);
+  // ... but each of them has a corner at z = 1, where no normal is given now
+  auto along_x_but_top_left = [](const Position& x) -> std::optional<Vector> {
+    if (x[0] == -1 && x[2] == 1) return std::nullopt;
+    return Vector(1, 0, 0);
+  };
+  CHECK(against(m, along_x_but_top_left) == 0);
+  // The mesh turned inside out: every face against the outward normals
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(m);
+  CHECK(against(m, radial) == 12);
+}
+
 TEST_CASE("crossings_near: the crossings of the suspect triangles only; the advancing front's cross none",
           "[applications][mesh]")
 {

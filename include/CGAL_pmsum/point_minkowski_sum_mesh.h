@@ -59,8 +59,8 @@ struct Mesh_statistics
   /// output points the reconstruction left out that were put back as vertices (each splitting
   /// its nearest triangle: internal/mesh_left_out_points.h)
   std::size_t points_put_back = 0;
-  /// how many times the mesh returned was made again round second sheets that the check
-  /// found in it (the sheets' triangles cut with a ring round them, the holes closed again:
+  /// how many times the mesh returned was made again round second sheets or folds that the
+  /// checks found in it (their triangles cut with a ring round them, the holes closed again:
   /// internal/mesh_reconstruction.h, remesh_around()); twice at most
   int sheets_remeshed = 0;
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
@@ -241,6 +241,13 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     ms.seconds_sum += seconds_since(t_sum);
     const auto t_mesh = Clock::now();
     const auto positions = double_positions(points);
+    std::unordered_map<Position, std::size_t, Position_hash> index_at; // of the points
+    for (std::size_t i = 0; i < points.size(); ++i) index_at.emplace(position(points[i]), i);
+    auto face_normal_at = [&](const Position& x) -> std::optional<Epick::Vector_3> {
+      const auto i = index_at.find(x);
+      if (i == index_at.end() || use[i->second] != Normal_use::normal) return std::nullopt;
+      return face_normals[i->second];
+    };
     // The advancing front first; where its mesh is refused, the points plane by plane
     // (internal/plane_triangulation.h), which needs the CD filter's exact test at a point.
     const Cd_geometry* geometry = pipeline.geometry();
@@ -262,11 +269,28 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       }
       ms.checks = mesh_from_triangles<ConcurrencyTag>(
         points, triangles, way == 0 ? Triangles_from::one_delaunay_triangulation : Triangles_from::anywhere, dl, mesh);
-      // A mesh with second sheets is made again round them (remesh_around()), twice at most,
-      // and checked again whole.
-      bool passed = false, across = false, split = false;
+      // A mesh with folds or second sheets is made again round them (remesh_around()), twice
+      // at most, and checked again whole.
+      auto remesh = [&](const std::vector<std::size_t>& cut_out) { // (indices in the order of faces(mesh))
+        using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+        const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end());
+        std::set<face_descriptor> cut;
+        for (std::size_t f : cut_out) cut.insert(face_of[f]);
+        ms.checks = remesh_around<ConcurrencyTag>(points, std::move(cut), dl, mesh);
+      };
+      bool passed = false, across = false, split = false, folded = false;
       const char* refuted = nullptr;
       for (int remeshed = 0;; ++remeshed) {
+        ms.sheets_remeshed = remeshed;
+        // Folds first, before points are put back (a tent folded flat onto its neighbours
+        // holds its point, and no part of the boundary is missed there).
+        const std::vector<std::size_t> folds = ms.checks.valid() ? faces_against_their_corners(mesh, face_normal_at)
+                                                                 : std::vector<std::size_t>();
+        folded = !folds.empty();
+        if (folded && remeshed < 2) {
+          remesh(folds);
+          continue;
+        }
         ms.point_distance = ms.checks.valid() ? largest_distance_to_mesh(points, mesh)
                                               : std::numeric_limits<double>::infinity();
         // Points left out, none as far as dl (farther: a part of the boundary is missing, and
@@ -292,7 +316,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         // (one outer shell: one volume, nothing to split)
         split = ms.checks.valid() && ms.checks.shells - ms.checks.void_shells > 1 && splits_a_part(mesh, positions, part);
         passed = ms.checks.valid() && ms.checks.shells > 0 && !split && ms.point_distance < dl &&
-                 ms.mesh_to_boundary_bound < dl && !across;
+                 ms.mesh_to_boundary_bound < dl && !across && !folded;
         // Last (they search segments): a void that the sum does not have (mesh_voids.h), two
         // sheets over one part of the boundary (mesh_second_sheet.h), a neck across free space
         // or a channel through the solid (mesh_necks.h), a handle the sum is not shown to have (mesh_short_handles.h).
@@ -311,13 +335,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
           else if (has_false_short_handle(mesh, dl, search, pipeline.parallel))
             refuted = "made a handle or a neck a few times that d round that the sum is not shown to have";
         }
-        ms.sheets_remeshed = remeshed;
         if (sheets.empty() || remeshed == 2) break;
-        using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-        const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end());
-        std::set<face_descriptor> cut;
-        for (std::size_t f : sheets) cut.insert(face_of[f]);
-        ms.checks = remesh_around<ConcurrencyTag>(points, std::move(cut), dl, mesh);
+        remesh(sheets);
       }
       ms.seconds_mesh += seconds_since(t_way); // (the checks included)
       if (passed && !refuted) {
@@ -334,7 +353,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
                                                             : "") +
                   (way == 0 ? " by the advancing front " : " plane by plane ") +
                   (across ? (cd ? "closed a hole over empty space" : "laid a face across a slit, from one part of a plane to another")
-                          : refuted ? refuted : level_failure(ms, split));
+                          : refuted ? refuted
+                          : folded  ? "turned a face against the faces of the sum its corners lie on (a fold)"
+                                    : level_failure(ms, split));
       clear(mesh); // a failed mesh is never left in `mesh`, whatever the next level throws
     }
   }
@@ -355,7 +376,9 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
 /// its container counting as one solid: the output points of such a part all lie on one
 /// outer shell and its voids), none of its voids opens onto another shell through free space
 /// (an exact segment test from the void's vertices nearest to another shell: a passage
-/// narrower than `d` that the reconstruction closed), no triangle lies inside the sum under a
+/// narrower than `d` that the reconstruction closed), no triangle faces against the faces of
+/// the sum all three of its corners lie on (more than 100 degrees from each: a fold; such a mesh is made
+/// again round them, as below), no triangle lies inside the sum under a
 /// vertex, or outside it over the vertex, facing its way, as a second sheet over that part of
 /// the boundary (exact segment tests along the vertex's normal: a pocket between two sheets,
 /// a handle the sum may not have; such a mesh is made again round them, twice at most, and

@@ -116,6 +116,10 @@ enum class Normal_use : unsigned char { none, side, normal };
 /// points on flat faces are cospherical), and CGAL breaks such ties by the addresses of its
 /// border elements, which depend on what the process allocated before: the radius is scaled
 /// by 1 + 2^-40 h, h in [0, 1) a hash of the triangle's vertices, so that the mesh does not.
+/// cos(80 degrees): the advancing front accepts a triangle only within 80 degrees of the face
+/// normal of each of its corners that has one (Normal_consistent_priority).
+constexpr double cos_largest_normal_angle = 0.17364817766693;
+
 struct Normal_consistent_priority
 {
   using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
@@ -127,7 +131,6 @@ struct Normal_consistent_priority
   template <class AdvancingFront, class Cell_handle>
   double operator()(const AdvancingFront& adv, Cell_handle& c, const int& index) const
   {
-    const double cos_max_angle = 0.17364817766693; // cos(80 degrees)
     const double infinity = std::numeric_limits<double>::infinity();
     std::array<typename Cell_handle::value_type::Vertex_handle, 3> v;
     for (int k = 0; k < 3; ++k) v[k] = c->vertex((index + k + 1) & 3);
@@ -152,7 +155,7 @@ struct Normal_consistent_priority
     if (t * (n[0] + n[1] + n[2]) < 0) t = -t;
     const double length = std::sqrt(t.squared_length());
     for (const Vector& nk : n)
-      if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_max_angle * length)) return infinity;
+      if (nk != CGAL::NULL_VECTOR && !(t * nk > cos_largest_normal_angle * length)) return infinity;
     if (back_to_back(v[0], v[1]) || back_to_back(v[1], v[2]) || back_to_back(v[2], v[0])) return infinity;
     const double radius = adv.smallest_radius_delaunay_sphere(c, index);
     return radius == infinity ? radius : scaled_radius(radius, v);
@@ -528,6 +531,64 @@ Mesh_checks close_mesh(const std::vector<Point>& points, double d,
     check_shells(mesh, c); // reorienting changes no position: the other checks stand
   }
   return c;
+}
+
+/// The normal of face f of `mesh` (a triangle), twice its area long, from its corners' positions
+/// rounded to doubles.
+template <class TriangleMesh>
+CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3
+face_normal(const TriangleMesh& mesh, typename boost::graph_traits<TriangleMesh>::face_descriptor f)
+{
+  const auto h = halfedge(f, mesh);
+  const std::array<Position, 3> x = {position(get(CGAL::vertex_point, mesh, source(h, mesh))),
+                                     position(get(CGAL::vertex_point, mesh, target(h, mesh))),
+                                     position(get(CGAL::vertex_point, mesh, target(next(h, mesh), mesh)))};
+  using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
+  auto side = [&](int k) { return Vector(x[k][0] - x[0][0], x[k][1] - x[0][1], x[k][2] - x[0][2]); };
+  return CGAL::cross_product(side(1), side(2));
+}
+
+/// The faces of `mesh` (oriented outward; their indices in the order of faces(mesh)) turned
+/// against the faces of the sum their corners lie on: every corner a point with a face normal
+/// (`normal_at(position(p))`: a unit vector, or none), each more than 100 degrees from the
+/// face's normal (the advancing front's test, Normal_consistent_priority, mirrored). The
+/// advancing front accepted such a face facing the other way, or a filling or a point put back
+/// made it, and orienting the mesh as a whole turned it over: the mesh folds there. A right
+/// mesh has none: it lies within d of the boundary, facing out where its corners' faces do
+/// (none on the 22 rows of the mesh table). Found by sweep.py's turned inputs (P turned by a
+/// seed's rotation; benchmark/mesh/hard/README.md), at 2% and 1% of the diagonal:
+/// - the L-shape (seed 41), -P plus a small cube: chords under a convex crease of 68 degrees,
+///   from points of one face to points of the other, faced into the solid (-0.73, -0.71 and
+///   -0.73 of their corners' normals), a tube under the crease; every other check passed it,
+///   with a handle too many (Euler characteristic 0 against 2);
+/// - cross (seed 53) plus star: a chord across a crease of 84 degrees turned over, a wrinkle
+///   beside the crease (the topology right).
+/// Such faces are made again round (remesh_around()), as second sheets are. The tents of the
+/// points put back (insert_left_out_points()) are not asked: mesh_levels() looks for folds
+/// before. The plates (seed 53) plus a small cube had a tent whose third triangle lay back on
+/// the other two, 3e-16 out of their plane (no crossing in doubles), a wrinkle of no thickness
+/// that holds its point; taking such tents down (tried) left the plates turned by seed 7 with
+/// a part of the boundary 1.1 d from the mesh.
+template <class TriangleMesh, class NormalAt>
+std::vector<std::size_t> faces_against_their_corners(const TriangleMesh& mesh, const NormalAt& normal_at)
+{
+  using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::vector<std::size_t> against_corners;
+  std::size_t index = 0;
+  for (auto f : faces(mesh)) {
+    const Vector t = face_normal(mesh, f);
+    const double length = std::sqrt(t.squared_length());
+    bool against = true;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+      const std::optional<Vector> n = normal_at(position(get(vpm, v)));
+      against = n && t * *n < -cos_largest_normal_angle * length;
+      if (!against) break;
+    }
+    if (against) against_corners.push_back(index);
+    ++index;
+  }
+  return against_corners;
 }
 
 /// Makes `triangles` (indices into `points`, a d-covering) into `mesh`, oriented to bound a
