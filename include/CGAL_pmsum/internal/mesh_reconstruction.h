@@ -563,7 +563,8 @@ face_normal(const TriangleMesh& mesh, typename boost::graph_traits<TriangleMesh>
 ///   with a handle too many (Euler characteristic 0 against 2);
 /// - cross (seed 53) plus star: a chord across a crease of 84 degrees turned over, a wrinkle
 ///   beside the crease (the topology right).
-/// Such faces are made again round (remesh_around()), as second sheets are. The tents of the
+/// Such faces are made again round (remesh_around()), as second sheets are; where that does not
+/// remove them, the mesh as it was goes on to the other checks. The tents of the
 /// points put back (insert_left_out_points()) are not asked: mesh_levels() looks for folds
 /// before. The plates (seed 53) plus a small cube had a tent whose third triangle lay back on
 /// the other two, 3e-16 out of their plane (no crossing in doubles), a wrinkle of no thickness
