@@ -59,9 +59,9 @@ struct Mesh_statistics
   /// output points the reconstruction left out that were put back as vertices (each splitting
   /// its nearest triangle: internal/mesh_left_out_points.h)
   std::size_t points_put_back = 0;
-  /// how many times the mesh returned was made again round second sheets or folds that the
+  /// how many times the mesh returned was made again round folds or second sheets that the
   /// checks found in it (their triangles cut with a ring round them, the holes closed again:
-  /// internal/mesh_reconstruction.h, remesh_around()); twice at most
+  /// internal/mesh_reconstruction.h, remesh_around()); twice at most for each
   int sheets_remeshed = 0;
   std::size_t vertices = 0;    ///< vertices of the mesh (output points of the sum)
   std::size_t triangles = 0;   ///< triangles of the mesh
@@ -270,7 +270,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       ms.checks = mesh_from_triangles<ConcurrencyTag>(
         points, triangles, way == 0 ? Triangles_from::one_delaunay_triangulation : Triangles_from::anywhere, dl, mesh);
       // A mesh with folds or second sheets is made again round them (remesh_around()), twice
-      // at most, and checked again whole.
+      // at most for each, and checked again whole.
       auto remesh = [&](const std::vector<std::size_t>& cut_out) { // (indices in the order of faces(mesh))
         using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
         const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end());
