@@ -120,15 +120,15 @@ bool splits_a_part(const TriangleMesh& mesh, const std::vector<CGAL::Exact_predi
                    const std::vector<std::size_t>& part)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  const auto part_at = parts_by_position(positions, part);
+  const auto index_at = indices_by_position(positions);
   auto volume_id = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   if (PMP::volume_connected_components(mesh, volume_id) < 2) return false;
   std::unordered_map<std::size_t, std::size_t> volume_of; // part -> volume
   for (auto v : vertices(mesh)) {
-    const auto it = part_at.find(position(get(CGAL::vertex_point, mesh, v)));
-    if (it == part_at.end()) continue;
+    const auto it = index_at.find(position(get(CGAL::vertex_point, mesh, v)));
+    if (it == index_at.end()) continue;
     const std::size_t volume = get(volume_id, face(halfedge(v, mesh), mesh));
-    if (volume_of.emplace(it->second, volume).first->second != volume) return true;
+    if (volume_of.emplace(part[it->second], volume).first->second != volume) return true;
   }
   return false;
 }
@@ -241,8 +241,7 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
     ms.seconds_sum += seconds_since(t_sum);
     const auto t_mesh = Clock::now();
     const auto positions = double_positions(points);
-    std::unordered_map<Position, std::size_t, Position_hash> index_at; // of the points
-    for (std::size_t i = 0; i < points.size(); ++i) index_at.emplace(position(points[i]), i);
+    const auto index_at = indices_by_position(points);
     auto face_normal_at = [&](const Position& x) -> std::optional<Epick::Vector_3> {
       const auto i = index_at.find(x);
       if (i == index_at.end() || use[i->second] != Normal_use::normal) return std::nullopt;
@@ -286,8 +285,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
       if (std::vector<std::size_t> folds = ms.checks.valid() ? faces_against_their_corners(mesh, face_normal_at)
                                                              : std::vector<std::size_t>();
           !folds.empty()) {
-        const TriangleMesh folded = mesh;
-        const Mesh_checks folded_checks = ms.checks;
+        const TriangleMesh before_folds = mesh;
+        const Mesh_checks before_folds_checks = ms.checks;
         while (!folds.empty() && fold_remeshes < 2) {
           remesh(folds);
           ++fold_remeshes;
@@ -295,8 +294,8 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
           else break;
         }
         if (!folds.empty() || !ms.checks.valid()) {
-          mesh = folded;
-          ms.checks = folded_checks;
+          mesh = before_folds;
+          ms.checks = before_folds_checks;
           fold_remeshes = 0;
         }
       }

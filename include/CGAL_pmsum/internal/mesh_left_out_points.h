@@ -81,10 +81,10 @@ std::size_t insert_left_out_points(const std::vector<Point>& points, const std::
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto part_at = parts_by_position(points, part); // of the mesh's vertices
+  const auto index_at = indices_by_position(points); // of the mesh's vertices
   auto part_of = [&](vertex_descriptor v) {
-    const auto it = part_at.find(position(get(CGAL::vertex_point, mesh, v)));
-    return it == part_at.end() ? std::size_t(-1) : it->second;
+    const auto it = index_at.find(position(get(CGAL::vertex_point, mesh, v)));
+    return it == index_at.end() ? std::size_t(-1) : part[it->second];
   };
   const auto positions = double_positions(points);
   const double on_mesh = rounding_margin_of(positions);

@@ -631,15 +631,14 @@ Mesh_checks remesh_around(const std::vector<Point>& points,
   return close_mesh<ConcurrencyTag>(points, d, &filled, mesh);
 }
 
-/// The part of the point at each position (`part[i]`: of `points[i]`, Sum_parts::of()), to
-/// tell the parts of a mesh's vertices.
+/// The index of the point at each position (the first of those there), to tell which point
+/// each vertex of a mesh is (its part, its normal).
 template <class Point>
-std::unordered_map<Position, std::size_t, Position_hash> parts_by_position(const std::vector<Point>& points,
-                                                                           const std::vector<std::size_t>& part)
+std::unordered_map<Position, std::size_t, Position_hash> indices_by_position(const std::vector<Point>& points)
 {
-  std::unordered_map<Position, std::size_t, Position_hash> part_at;
-  for (std::size_t i = 0; i < points.size(); ++i) part_at.emplace(position(points[i]), part[i]);
-  return part_at;
+  std::unordered_map<Position, std::size_t, Position_hash> index_at;
+  for (std::size_t i = 0; i < points.size(); ++i) index_at.emplace(position(points[i]), i);
+  return index_at;
 }
 
 /// The margin added to a distance measured on positions rounded to doubles, for that rounding
