@@ -1393,10 +1393,10 @@ TEST_CASE("has_second_sheet: a second sheet over the boundary, inside the sum or
     Soup mesh = boundary;
     mesh.append(k.added);
     const Mesh m = to_mesh<Mesh>(mesh);
-    CHECK(has_second_sheet(m, k.d, search, false) == k.second_sheet);
-    CHECK(has_second_sheet(m, k.d, search, true) == k.second_sheet); // (chosen on TBB's threads)
+    CHECK(has_second_sheet(to_shell(m), k.d, search, false) == k.second_sheet);
+    CHECK(has_second_sheet(to_shell(m), k.d, search, true) == k.second_sheet); // (chosen on TBB's threads)
     // The triangles of the sheets found, for remesh_around(): the triangle met is one added.
-    const auto sheets = second_sheet_triangles(m, k.d, search, true, true);
+    const auto sheets = second_sheet_triangles(to_shell(m), k.d, search, true, true);
     CHECK(sheets.empty() == !k.second_sheet);
     if (!sheets.empty()) CHECK(sheets.front() >= boundary.triangles.size());
   }
@@ -1444,15 +1444,15 @@ TEST_CASE("has_false_short_handle: a tunnel of the mesh a few d round, the sum's
     const Cd_geometry geometry(operands.first, operands.second);
     Cd_filter filter(&geometry);
     Segment_search search(filter);
-    CHECK(has_false_short_handle(k.mesh, k.d, search, false) == k.false_handle);
-    CHECK(has_false_short_handle(k.mesh, k.d, search, true) == k.false_handle); // (the balls on TBB's threads)
+    CHECK(has_false_short_handle(to_shell(k.mesh), k.d, search, false) == k.false_handle);
+    CHECK(has_false_short_handle(to_shell(k.mesh), k.d, search, true) == k.false_handle); // (the balls on TBB's threads)
   }
   // The wide tunnel is not seen by the narrow balls alone: at d = 0.4 (radius 3 d = 1.2 < 1.8).
   const auto operands = cd_operands(box({-0.55, -0.55, -0.55}, {0.55, 0.55, 0.55}), pmsum_shapes::tunnel_block());
   const Cd_geometry geometry(operands.first, operands.second);
   Cd_filter filter(&geometry);
   Segment_search search(filter);
-  CHECK_FALSE(has_false_short_handle(tunnel_mesh(0.05), 0.4, search, false));
+  CHECK_FALSE(has_false_short_handle(to_shell(tunnel_mesh(0.05)), 0.4, search, false));
 }
 
 TEST_CASE("has_neck_or_channel: two blocks joined by a neck across a gap, the sum's or not, or a channel through a block", "[applications][mesh]")
@@ -1509,8 +1509,8 @@ TEST_CASE("has_neck_or_channel: two blocks joined by a neck across a gap, the su
     Cd_filter filter(&geometry);
     Segment_search search(filter);
     auto free_at = [&](const std::array<double, 3>& x) { return filter.is_free_at(x); };
-    CHECK(has_neck_or_channel(m, 0.8, search, free_at, false) == k.neck);
-    CHECK(has_neck_or_channel(m, 0.8, search, free_at, true) == k.neck); // (chosen on TBB's threads)
+    CHECK(has_neck_or_channel(to_shell(m), 0.8, search, free_at, false) == k.neck);
+    CHECK(has_neck_or_channel(to_shell(m), 0.8, search, free_at, true) == k.neck); // (chosen on TBB's threads)
   }
   // Two membranes over a passage: the block [0, 4]^3 with the tunnel [1.5, 2.5]^2 along z
   // (tunnel_block()) plus the cube of half-side 0.05 meshed whole, at d = 2.2. The segments from
@@ -1526,7 +1526,7 @@ TEST_CASE("has_neck_or_channel: two blocks joined by a neck across a gap, the su
     Cd_filter filter(&geometry);
     Segment_search search(filter);
     auto free_at = [&](const std::array<double, 3>& x) { return filter.is_free_at(x); };
-    CHECK(has_neck_or_channel(whole_block, 2.2, search, free_at, false) == tunnel);
+    CHECK(has_neck_or_channel(to_shell(whole_block), 2.2, search, free_at, false) == tunnel);
   }
 }
 
@@ -1631,8 +1631,8 @@ TEST_CASE("has_neck_or_channel: a plug across a slit of the sum, with a dead-end
     INFO(k.what);
     const Mesh m = to_mesh<Mesh>(subdivided(k.mesh, 1));
     REQUIRE(CGAL::Pmsum::check_mesh(m).valid());
-    CHECK(has_neck_or_channel(m, 1.0, search, free_at, false) == k.refused);
-    CHECK(has_neck_or_channel(m, 1.0, search, free_at, true) == k.refused); // (chosen on TBB's threads)
+    CHECK(has_neck_or_channel(to_shell(m), 1.0, search, free_at, false) == k.refused);
+    CHECK(has_neck_or_channel(to_shell(m), 1.0, search, free_at, true) == k.refused); // (chosen on TBB's threads)
   }
 }
 

@@ -49,13 +49,13 @@ public:
 
   explicit Shell_triangle_tree(const std::vector<Shell>& shells)
   {
-    for (const Shell& s : shells)
-      for (const auto& t : s.triangles) {
-        auto p = [&](int i) { return K::Point_3(s.points[t[i]][0], s.points[t[i]][1], s.points[t[i]][2]); };
-        m_triangles.emplace_back(p(0), p(1), p(2));
-      }
-    if (m_triangles.empty()) return;
-    m_tree.rebuild(m_triangles.begin(), m_triangles.end()); // (its kd-tree for distances: at the first)
+    for (const Shell& s : shells) add(s);
+    build();
+  }
+  explicit Shell_triangle_tree(const Shell& s)
+  {
+    add(s);
+    build();
   }
   Shell_triangle_tree(const Shell_triangle_tree&) = delete;
   Shell_triangle_tree& operator=(const Shell_triangle_tree&) = delete;
@@ -108,6 +108,18 @@ private:
   using Triangles = std::vector<K::Triangle_3>;
   using Traits = CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>;
   using Tree = CGAL::AABB_tree<Traits>;
+
+  void add(const Shell& s)
+  {
+    for (const auto& t : s.triangles) {
+      auto p = [&](int i) { return K::Point_3(s.points[t[i]][0], s.points[t[i]][1], s.points[t[i]][2]); };
+      m_triangles.emplace_back(p(0), p(1), p(2));
+    }
+  }
+  void build()
+  {
+    if (!m_triangles.empty()) m_tree.rebuild(m_triangles.begin(), m_triangles.end()); // (its kd-tree for distances: at the first)
+  }
 
   // The traversal of for_each_met(): AABB_tree's listing of the primitives a query meets,
   // with the skipped ones left out before their test.

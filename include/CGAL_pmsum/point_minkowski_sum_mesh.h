@@ -37,6 +37,8 @@
 #include <CGAL_pmsum/internal/plane_triangulation.h>
 #include <CGAL_pmsum/point_minkowski_sum.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
@@ -334,18 +336,34 @@ void mesh_levels(Pipeline<ConcurrencyTag>& pipeline, const Mesh_data& mp, const 
         // or a channel through the solid (mesh_necks.h), a handle the sum is not shown to have (mesh_short_handles.h).
         refuted = nullptr;
         std::vector<std::size_t> sheets; // (triangles of second sheets, in the order of faces(mesh))
-        if (passed && geometry) {
+        if (passed && geometry && ms.checks.void_shells > 0) {
           Cd_filter filter(geometry);
           Segment_search search(filter);
-          if (ms.checks.void_shells > 0 && has_false_void(mesh, search))
+          if (has_false_void(mesh, search))
             refuted = "made a void that the sum does not have (a passage narrower than that d closed)";
-          else if (!(sheets = second_sheet_triangles(mesh, dl, search, pipeline.parallel, true)).empty())
-            refuted = "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)";
-          else if (has_neck_or_channel(mesh, dl, search, [&](const std::array<double, 3>& x) { return filter.is_free_at(x); },
-                                       pipeline.parallel))
-            refuted = "joined two parts of the boundary by a neck across free space, or cut a channel through the solid";
-          else if (has_false_short_handle(mesh, dl, search, pipeline.parallel))
-            refuted = "made a handle or a neck a few times that d round that the sum is not shown to have";
+        }
+        if (passed && geometry && !refuted) {
+          // The other three read the mesh as one shell: with threads, side by side (a filter
+          // each; they are most of a passing level's checks and mostly run on one thread);
+          // the first of them, in this order, that refutes it answers.
+          const Shell shell = to_shell(mesh);
+          std::array<bool, 3> refutes = {false, false, false};
+          for_each_index(refutes.size(), pipeline.parallel, [&](std::size_t k) {
+            if (!pipeline.parallel && std::count(refutes.begin(), refutes.end(), true) > 0) return;
+            Cd_filter filter(geometry);
+            Segment_search search(filter);
+            if (k == 0) refutes[k] = !(sheets = second_sheet_triangles(shell, dl, search, pipeline.parallel, true)).empty();
+            if (k == 1)
+              refutes[k] = has_neck_or_channel(shell, dl, search, [&](const std::array<double, 3>& x) { return filter.is_free_at(x); },
+                                               pipeline.parallel);
+            if (k == 2) refutes[k] = has_false_short_handle(shell, dl, search, pipeline.parallel);
+          });
+          const char* const refusals[] = {
+            "laid two sheets over one part of the boundary (a pocket between them: a handle the sum may not have)",
+            "joined two parts of the boundary by a neck across free space, or cut a channel through the solid",
+            "made a handle or a neck a few times that d round that the sum is not shown to have"};
+          const auto first = std::find(refutes.begin(), refutes.end(), true);
+          if (first != refutes.end()) refuted = refusals[first - refutes.begin()];
         }
         if (sheets.empty() || remeshed == 2) break;
         remesh(sheets);

@@ -109,26 +109,24 @@ inline long patch_euler_characteristic(const Shell& s, const std::vector<std::si
   return distinct(corners) - distinct(sides) + long(triangles.size());
 }
 
-/// Does `mesh` (closed, oriented, its vertices on the boundary of the sum) join two parts of
-/// the boundary by a neck across free space, or cut a channel through the solid: is the segment
-/// from the centroid of a triangle f into the mesh (out of it), along f's normal, up to the
-/// first triangle it meets within `2 d`, wholly outside (inside) the sum, and the component at
-/// f of the triangles over free space (under the solid) a ring or worse (Euler characteristic
-/// at most 0; see the file comment), or, out of the mesh, does that segment end off f's
-/// component where the solid round it is cut off from the mesh's inside (a rod of the sum cut
-/// through)? `search`: on the CD filter of the sum; `is_free_at(x)`:
-/// that filter's test at a point (x: `std::array<double, 3>`), tried first. `parallel`: choose
-/// the segments on the threads of TBB (the exact tests then run on this one, in the triangles'
-/// order).
-template <class TriangleMesh, class IsFreeAt>
-bool has_neck_or_channel(const TriangleMesh& mesh, double d, Segment_search& search, IsFreeAt&& is_free_at, bool parallel)
+/// Does `s` (a mesh as one shell, to_shell(): closed, oriented, its vertices on the boundary of
+/// the sum) join two parts of the boundary by a neck across free space, or cut a channel
+/// through the solid: is the segment from the centroid of a triangle f into the mesh (out of
+/// it), along f's normal, up to the first triangle it meets within `2 d`, wholly outside
+/// (inside) the sum, and the component at f of the triangles over free space (under the solid)
+/// a ring or worse (Euler characteristic at most 0; see the file comment), or, out of the mesh,
+/// does that segment end off f's component where the solid round it is cut off from the mesh's
+/// inside (a rod of the sum cut through)? `search`: on the CD filter of the sum;
+/// `is_free_at(x)`: that filter's test at a point (x: `std::array<double, 3>`), tried first.
+/// `parallel`: choose the segments on the threads of TBB (the exact tests then run on this one,
+/// in the triangles' order).
+template <class IsFreeAt>
+bool has_neck_or_channel(const Shell& s, double d, Segment_search& search, IsFreeAt&& is_free_at, bool parallel)
 {
   using V = std::array<double, 3>;
-  const std::vector<Shell> shells = {to_shell(mesh)};
-  const Shell& s = shells.front();
   if (s.triangles.empty()) return false;
   using K = Shell_triangle_tree::K;
-  const Shell_triangle_tree tree(shells);
+  const Shell_triangle_tree tree(s);
   const Triangle_stars stars(s.triangles, s.points.size());
   auto normal = [&](std::size_t f) {
     const auto& t = s.triangles[f];

@@ -103,16 +103,13 @@ struct Vertex_stars : Triangle_stars // (the triangles at each vertex)
   }
 };
 
-/// The triangles of the second sheets has_second_sheet() finds (indices in the order of
-/// faces(mesh)): of each, the triangle met and the last one facing against v's normal that
-/// the segment met before it (the pocket's other wall), if any; of the first sheet found
-/// only, unless `all`.
-template <class TriangleMesh>
-std::vector<std::size_t> second_sheet_triangles(const TriangleMesh& mesh, double d, Segment_search& search, bool parallel, bool all)
+/// The triangles of the second sheets has_second_sheet() finds (indices into `s.triangles`:
+/// in the order of faces(mesh) if `s` is to_shell(mesh)): of each, the triangle met and the
+/// last one facing against v's normal that the segment met before it (the pocket's other
+/// wall), if any; of the first sheet found only, unless `all`.
+inline std::vector<std::size_t> second_sheet_triangles(const Shell& s, double d, Segment_search& search, bool parallel, bool all)
 {
   using V = std::array<double, 3>;
-  const std::vector<Shell> shells = {to_shell(mesh)};
-  const Shell& s = shells.front();
   if (s.triangles.empty()) return {};
   const Vertex_stars stars(s);
   const auto& normal = stars.normal; // (references, not a structured binding: lambdas capture them)
@@ -120,7 +117,7 @@ std::vector<std::size_t> second_sheet_triangles(const TriangleMesh& mesh, double
   const auto& start = stars.start;
   const auto& at = stars.at;
   using K = Shell_triangle_tree::K;
-  const Shell_triangle_tree tree(shells);
+  const Shell_triangle_tree tree(s);
   // Does the line through x and y cross triangle f, facing u's way, through the sheet: inside
   // it (exact orientations, all of one sign), or inside one of its sides where the triangle
   // across that side faces u's way too (the two then lie like a graph over the line there; a
@@ -202,20 +199,19 @@ std::vector<std::size_t> second_sheet_triangles(const TriangleMesh& mesh, double
   return found;
 }
 
-/// Does `mesh` (closed, its vertices on the boundary of the sum) have two sheets over one part
-/// of the boundary: does a segment of length `d` from a vertex v along its normal, into the
-/// mesh or out of it, meet a triangle inside (or inside a side between two such) that has no
-/// corner in v's star, faces v's way and shares no side with a triangle facing against it met
-/// before, at a point q with the segment from v to q wholly inside the sum (into the mesh) or
-/// outside it (out of it) (see the file comment)? `search`: on the CD filter of the sum.
-/// `parallel`: choose the segments on the threads of TBB (the exact searches then run on this
-/// one, in the vertices' order).
-/// @pre no triangle of `mesh` is degenerate in doubles (check_mesh() counts one as a
+/// Does `s` (a mesh as one shell, to_shell(): closed, its vertices on the boundary of the sum)
+/// have two sheets over one part of the boundary: does a segment of length `d` from a vertex v
+/// along its normal, into the mesh or out of it, meet a triangle inside (or inside a side
+/// between two such) that has no corner in v's star, faces v's way and shares no side with a
+/// triangle facing against it met before, at a point q with the segment from v to q wholly
+/// inside the sum (into the mesh) or outside it (out of it) (see the file comment)? `search`:
+/// on the CD filter of the sum. `parallel`: choose the segments on the threads of TBB (the
+/// exact searches then run on this one, in the vertices' order).
+/// @pre no triangle of `s` is degenerate in doubles (check_mesh() counts one as a
 ///      self-intersection: the meshes checked here passed it)
-template <class TriangleMesh>
-bool has_second_sheet(const TriangleMesh& mesh, double d, Segment_search& search, bool parallel)
+inline bool has_second_sheet(const Shell& s, double d, Segment_search& search, bool parallel)
 {
-  return !second_sheet_triangles(mesh, d, search, parallel, false).empty();
+  return !second_sheet_triangles(s, d, search, parallel, false).empty();
 }
 
 } // namespace internal

@@ -346,14 +346,13 @@ inline bool sum_has_tube(const Shell& s, const Vertex_stars& stars, const std::v
   return true;
 }
 
-/// Has `mesh` (closed, manifold, its vertices on the boundary of the sum) a handle or a neck
-/// narrower than about 4 d that the sum is not shown to have (see the file comment)?
+/// Has `s` (a mesh as one shell, to_shell(): closed, manifold, its vertices on the boundary of
+/// the sum) a handle or a neck narrower than about 4 d that the sum is not shown to have (see
+/// the file comment)?
 /// `search`: on the CD filter of the sum. `parallel`: the balls' Euler characteristics on
 /// TBB's threads.
-template <class TriangleMesh>
-bool has_false_short_handle(const TriangleMesh& mesh, double d, Segment_search& search, bool parallel)
+inline bool has_false_short_handle(const Shell& s, double d, Segment_search& search, bool parallel)
 {
-  const Shell s = to_shell(mesh);
   if (s.triangles.empty()) return false;
   const Vertex_stars stars(s);
   Edge_balls balls(s, stars);
