@@ -25,18 +25,33 @@
 // at 1.75% of the diagonal: a column 1.48 d long and 0.57 d wide along a concave vertical
 // edge; the hooks at 4.5%: a sliver 1.27 d long under the chords along a concave edge, 0.05 d
 // deep), as long as the neck's (1.1-1.27 d): their length tells nothing. Their shape does. The
-// triangles of the mesh over free space (the segment from the centroid d/4 into the mesh
+// triangles of the mesh over free space (the segment from the centroid d/8 into the mesh
 // wholly free) next to f, side by side: round a concave corner's pocket they cover it (its
 // caps and the chords along it), a disk; round a neck they are its walls, a ring round it
 // (Euler characteristic 0: 12 triangles on the knot's neck). A component of them at f with
 // Euler characteristic 0 or less is a neck, and the mesh is refused like one that fails a
 // check. A channel is the same out of the mesh: segments from the triangles out of it, up to
 // the first triangle met (facing against the segment: it enters the mesh again), wholly
-// inside the sum, and the triangles under the solid (the segment d/4 out of the mesh inside
+// inside the sum, and the triangles under the solid (the segment d/8 out of the mesh inside
 // it) a ring or worse (chords across a convex edge lie under the solid too: a strip, a
 // disk). Components of more than 1000 triangles are left alone (a neck narrower than about d
 // has a few dozen; the test is local). The normals, centroids and meeting points are computed
 // in doubles and only choose the segments; the exact search decides.
+//
+// The depth d/8 (d/4 until 2026-12-07): CGAL's hand plus its octahedron scaled by 0.0111958
+// (5% of the hand's diagonal), at 2% of the sum's diagonal, was meshed with a neck across the
+// gap where two parts of the hand nearly meet, 0.2-0.5 d wide and narrowing into a wedge (Euler
+// characteristic 0 against the exact 2; within 0.58 d of the exact boundary both ways). Its
+// walls slant into the wedge: from many of them the solid is nearer than d/4 along the normal,
+// and the triangles over free space at d/4 made two disks (26 and 10 triangles), at d/8 a
+// ring or worse (44 triangles, Euler characteristic -1; measured outside the tool, by the
+// winding number of the exact boundary at 8 points along each segment). Now refused at d and at d again, meshed
+// at d/2 with Euler characteristic 2 (0.12 d / 0.18 d from the exact boundary). The 22 rows at
+// 1, 1.75, 2.5 and 3.5 times their d give the same files as with d/4; of the 68 default variants
+// of benchmark/mesh/hard/sweep.py, 67 the same outcome, and the slit turned by seed 7 plus the
+// slot cube at 4% is meshed plane by plane at d/2 (8,905 vertices), which d/4 refused (a ring
+// there; the level after it was accepted), validated against Nef: Euler characteristic 2, the
+// exact one, 0.17 d / 0.23 d both ways.
 //
 // Measured (2026-12-06): on the 22 rows of the mesh table, at 1, 1.75, 2.5 and 3.5 times their
 // d, the same meshes as without the check but knot1 + tetrahedron at 3.5 times (the neck
@@ -219,7 +234,7 @@ bool has_neck_or_channel(const Shell& s, double d, Segment_search& search, IsFre
         out.push_back({c + scaled(q - c, start), q, f, met.g});
       }
     });
-    // Over free space (under the solid): the segment from the centroid d/4 into the mesh
+    // Over free space (under the solid): the segment from the centroid d/8 into the mesh
     // wholly free (out of it, wholly inside), each triangle tested once, when first reached.
     std::fill(held.begin(), held.end(), -1);
     std::fill(component_of.begin(), component_of.end(), none);
@@ -227,7 +242,7 @@ bool has_neck_or_channel(const Shell& s, double d, Segment_search& search, IsFre
       if (held[f] < 0) {
         const V n = normal(f), c = centroid(f);
         const double length = std::sqrt(dot(n, n));
-        const V e = c + scaled(n, way * d / 4 / length);
+        const V e = c + scaled(n, way * d / 8 / length);
         held[f] = length > 0 && holds(c + scaled(e - c, start), e);
       }
       return held[f] > 0;
