@@ -45,8 +45,9 @@
 // walls slant into the wedge: from many of them the solid is nearer than d/4 along the normal,
 // and the triangles over free space at d/4 made two disks (26 and 10 triangles), at d/8 a
 // ring or worse (44 triangles, Euler characteristic -1; measured outside the tool, by the
-// winding number of the exact boundary at 8 points along each segment). Now refused at d and at d again, meshed
-// at d/2 with Euler characteristic 2 (0.12 d / 0.18 d from the exact boundary). The 22 rows at
+// winding number of the exact boundary at 8 points along each segment). Now refused at d and
+// at d again, meshed at d/2 with Euler characteristic 2 (0.12 d / 0.18 d from the exact
+// boundary). The 22 rows at
 // 1, 1.75, 2.5 and 3.5 times their d give the same files as with d/4; of the 68 default variants
 // of benchmark/mesh/hard/sweep.py, 67 the same outcome, and the slit turned by seed 7 plus the
 // slot cube at 4% is meshed plane by plane at d/2 (8,905 vertices), which d/4 refused (a ring
