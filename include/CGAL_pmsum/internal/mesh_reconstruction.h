@@ -400,6 +400,54 @@ struct Triangle_stars
   }
 };
 
+/// Removes, at each point where `triangles` (point indices) make several fans (triangles
+/// joined by their sides through the point), every fan but the one with the most triangles
+/// (the first of them if equal), until every point has one fan: the places left are holes
+/// for fill_holes(). Plane by plane, two planes' triangles may touch at a crease point only
+/// (CGAL's 3torus, whose quadrilaterals are a millionth out of plane, plus a tetrahedron:
+/// five such points at d = 1.5% of the diagonal, where orient_manifold_triangles() refused
+/// the whole level).
+inline void keep_one_fan_per_point(std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  for (bool removed = true; removed;) {
+    removed = false;
+    std::size_t points = 0;
+    for (const auto& t : triangles) points = (std::max)(points, *std::max_element(t.begin(), t.end()) + 1);
+    const Triangle_stars stars(triangles, points);
+    std::vector<bool> gone(triangles.size(), false);
+    std::vector<std::size_t> fan(triangles.size()); // the fan of each triangle at the point p
+    for (std::size_t p = 0; p < points; ++p) {
+      const std::size_t first = stars.start[p], last = stars.start[p + 1];
+      if (last - first < 2) continue;
+      for (std::size_t k = first; k < last; ++k) fan[stars.at[k]] = k - first;
+      // join the triangles at p that share a side through p (union of fans, smallest label)
+      for (bool joined = true; joined;) {
+        joined = false;
+        for (std::size_t k = first; k < last; ++k)
+          for (std::size_t l = k + 1; l < last; ++l) {
+            const auto &a = triangles[stars.at[k]], &b = triangles[stars.at[l]];
+            bool side = false;
+            for (std::size_t q : a) side = side || (q != p && std::count(b.begin(), b.end(), q) > 0);
+            std::size_t &fa = fan[stars.at[k]], &fb = fan[stars.at[l]];
+            if (side && fa != fb) {
+              fa = fb = (std::min)(fa, fb);
+              joined = true;
+            }
+          }
+      }
+      std::vector<std::size_t> size(last - first, 0);
+      for (std::size_t k = first; k < last; ++k) ++size[fan[stars.at[k]]];
+      const std::size_t kept = std::size_t(std::max_element(size.begin(), size.end()) - size.begin());
+      for (std::size_t k = first; k < last; ++k)
+        if (fan[stars.at[k]] != kept) removed = gone[stars.at[k]] = true;
+    }
+    std::size_t j = 0;
+    for (std::size_t f = 0; f < triangles.size(); ++f)
+      if (!gone[f]) triangles[j++] = triangles[f];
+    triangles.resize(j);
+  }
+}
+
 /// Orients `triangles` (point indices) consistently if they form an orientable 2-manifold
 /// (with or without border), as CGAL's orient_polygon_soup() would (each edge-connected
 /// component keeps the orientation of its first triangle; a triangle turned is reversed):
@@ -606,6 +654,7 @@ Mesh_checks mesh_from_triangles(const std::vector<Point>& points, const std::vec
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   std::vector<std::array<std::size_t, 3>> polygons(triangles);
   clear(mesh);
+  keep_one_fan_per_point(polygons);
   if (!orient_manifold_triangles(polygons)) return Mesh_checks{}; // not orientable, or not a manifold mesh
   std::vector<Point> soup_points(points);
   PMP::remove_isolated_points_in_polygon_soup(soup_points, polygons); // points the triangles left out
